@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Installs the Debian packages this repository needs, and nothing when all are present.
+# Usage: scripts/deps.sh   (called by `make deps`; root or sudo, otherwise prints the apt-get line)
+set -euo pipefail
+
+packages=(
+  g++ make cmake pkg-config
+  libeigen3-dev libsuitesparse-dev libmuparser-dev libcli11-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  freefem++ libfreefem++ gmsh
+  pandoc gnuplot-nox
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  # dpkg-query is exact about "installed"; a removed-but-configured package does not count.
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+
+if [[ ${#missing[@]} -eq 0 ]]; then
+  echo "deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "deps: missing ${missing[*]}"
+if [[ $(id -u) -eq 0 ]]; then
+  sudo=()
+elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
+  sudo=(sudo)
+else
+  echo "deps: not root and no password-less sudo; run this as root:" >&2
+  echo "  apt-get update && apt-get install -y ${missing[*]}" >&2
+  exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update
+"${sudo[@]}" apt-get install -y --no-install-recommends "${missing[@]}"

@@ -1,0 +1,81 @@
+// Assembly by stencil. Every element is the same square, so the block coupling two interior
+// nodes depends only on their offset (di, dj) in {-1, 0, 1}^2: we sum the element blocks once
+// and write the sparse matrix column by column, in order, with no triplets and no searching.
+// This is the usual element loop with the loop over elements done once for all columns.
+#include "assemble.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "gauss.hpp"
+
+namespace plate {
+
+namespace {
+using Block = Eigen::Matrix4d;
+
+// blocks[di + 1][dj + 1](a, b): coupling of component a at node Q + (di, dj) with component b
+// at node Q, summed over the (up to four) elements that contain both.
+std::array<std::array<Block, 3>, 3> stencil_blocks(const Matrix16& element) {
+  std::array<std::array<Block, 3>, 3> blocks;
+  for (auto& row : blocks)
+    for (auto& b : row) b.setZero();
+  // The element's lower-left corner sits at Q - (aqx, aqy): Q is its corner (aqx, aqy).
+  for (int aqx = 0; aqx < 2; ++aqx)
+    for (int aqy = 0; aqy < 2; ++aqy)
+      for (int di = -1; di <= 1; ++di)
+        for (int dj = -1; dj <= 1; ++dj) {
+          const int apx = aqx + di, apy = aqy + dj;
+          if (apx < 0 || apx > 1 || apy < 0 || apy > 1) continue;
+          blocks[di + 1][dj + 1] += element.block<4, 4>(4 * (apx + 2 * apy), 4 * (aqx + 2 * aqy));
+        }
+  return blocks;
+}
+}  // namespace
+
+SpMat assemble_matrix(const Grid& g, const Matrix16& element) {
+  const auto blocks = stencil_blocks(element);
+  const int n = g.unknowns();
+  SpMat A(n, n);
+  A.reserve(static_cast<Eigen::Index>(n) * 36);
+  for (int qj = 1; qj < g.ny; ++qj)
+    for (int qi = 1; qi < g.nx; ++qi)
+      for (int b = 0; b < 4; ++b) {
+        const int col = g.dof(qi, qj, b);
+        A.startVec(col);
+        // Neighbours in (dj, di) order have increasing node numbers, so rows come sorted.
+        for (int dj = -1; dj <= 1; ++dj)
+          for (int di = -1; di <= 1; ++di) {
+            if (!g.is_interior(qi + di, qj + dj)) continue;
+            const int row0 = 4 * g.node(qi + di, qj + dj);
+            for (int a = 0; a < 4; ++a) A.insertBack(row0 + a, col) = blocks[di + 1][dj + 1](a, b);
+          }
+      }
+  A.finalize();
+  return A;
+}
+
+VectorXd assemble_load(const Grid& g, const Field& f, const char* name) {
+  const Quadrature1D q = gauss_legendre(4);
+  VectorXd F = VectorXd::Zero(g.unknowns());
+  for (int ey = 0; ey < g.ny; ++ey)
+    for (int ex = 0; ex < g.nx; ++ex) {
+      const auto dofs = g.element_dofs(ex, ey);
+      for (size_t i = 0; i < q.points.size(); ++i)
+        for (size_t j = 0; j < q.points.size(); ++j) {
+          const double x = g.x(ex) + q.points[i] * g.h, y = g.y(ey) + q.points[j] * g.h;
+          const double fx = f(x, y);
+          if (!std::isfinite(fx))
+            throw std::invalid_argument(std::string(name) + " is not finite at (" + std::to_string(x) + ", " +
+                                        std::to_string(y) + "): " + std::to_string(fx));
+          const Vector16 v = bfs_basis(q.points[i], q.points[j], g.h).v;
+          const double wq = q.weights[i] * q.weights[j] * g.h * g.h * fx;
+          for (int k = 0; k < 16; ++k)
+            if (dofs[k] >= 0) F[dofs[k]] += wq * v[k];
+        }
+    }
+  return F;
+}
+
+}  // namespace plate

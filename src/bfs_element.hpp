@@ -1,0 +1,21 @@
+// The Bogner-Fox-Schmit element on a square of side h: local basis and element matrices.
+// Local unknown 4 * (ax + 2 ay) + c belongs to corner (ax, ay) and component c (w, w_x, w_y, w_xy).
+#pragma once
+#include <Eigen/Dense>
+
+namespace plate {
+
+using Matrix16 = Eigen::Matrix<double, 16, 16>;
+using Vector16 = Eigen::Matrix<double, 16, 1>;
+
+// The 16 local basis functions and their derivatives at local coordinates (t, s).
+struct LocalBasis {
+  Vector16 v, dx, dy, dxx, dxy, dyy;
+};
+LocalBasis bfs_basis(double t, double s, double h);
+
+// Element matrices, integrated exactly by 4 x 4 Gauss points.
+Matrix16 bfs_stiffness(double h);  // (Lap u, Lap v) on the element
+Matrix16 bfs_mass(double h);       // (u, v) on the element
+
+}  // namespace plate

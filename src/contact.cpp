@@ -1,0 +1,89 @@
+// Post-processing: Hermite evaluation, contact force and moments.
+#include "contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace plate {
+
+namespace {
+PointValues evaluate_in(const Grid& g, const VectorXd& w, int ex, int ey, double t, double s) {
+  const LocalBasis b = bfs_basis(t, s, g.h);
+  const auto dofs = g.element_dofs(ex, ey);
+  Vector16 c;
+  for (int k = 0; k < 16; ++k) c[k] = dofs[k] >= 0 ? w[dofs[k]] : 0.0;
+  return {c.dot(b.v), c.dot(b.dx), c.dot(b.dy), c.dot(b.dxx), c.dot(b.dxy), c.dot(b.dyy)};
+}
+}  // namespace
+
+PointValues evaluate(const Grid& g, const VectorXd& w, double x, double y) {
+  int ex, ey;
+  double t, s;
+  if (!g.locate(x, y, ex, ey, t, s)) {
+    std::ostringstream m;
+    m << "point (" << x << ", " << y << ") is outside the plate [0, " << g.lx() << "] x [0, " << g.ly() << "]";
+    throw std::invalid_argument(m.str());
+  }
+  return evaluate_in(g, w, ex, ey, t, s);
+}
+
+// Moments after (9), with Kirchhoff's sign of nu.
+Moments bending_moments(double wxx, double wxy, double wyy, double nu) {
+  return {-(wxx + nu * wyy), -(1.0 - nu) * wxy, -(wyy + nu * wxx)};
+}
+
+// Eq. (9): contact force density xi = -eps^{-1} beta(w) at the sample points.
+VectorXd contact_force_density(const Problem& p, const VectorXd& w, double eps) {
+  return (p.phi - p.sampling.S * w).cwiseMax(0.0) / eps;
+}
+
+double total_contact_force(const Problem& p, const VectorXd& xi) { return p.sampling.weights.dot(xi); }
+
+double penalty_residual(const Problem& p, const VectorXd& w, double eps) {
+  const VectorXd Kw = p.K * w;
+  const VectorXd xi = contact_force_density(p, w, eps);
+  const VectorXd r = Kw - p.F - p.sampling.S.transpose() * p.sampling.weights.cwiseProduct(xi);
+  const double scale = Kw.norm() + p.F.norm();
+  return scale > 0 ? r.norm() / scale : r.norm();
+}
+
+NodalFields nodal_fields(const Problem& p, const VectorXd& w, const Field& obstacle, double eps, double nu) {
+  const Grid& g = p.grid;
+  const VectorXd force = p.sampling.S.transpose() * p.sampling.weights.cwiseProduct(contact_force_density(p, w, eps));
+  NodalFields f;
+  for (int j = 0; j <= g.ny; ++j)
+    for (int i = 0; i <= g.nx; ++i) {
+      PointValues avg{0, 0, 0, 0, 0, 0};
+      int count = 0;
+      for (int ey = std::max(0, j - 1); ey <= std::min(g.ny - 1, j); ++ey)
+        for (int ex = std::max(0, i - 1); ex <= std::min(g.nx - 1, i); ++ex) {
+          const PointValues v = evaluate_in(g, w, ex, ey, i - ex, j - ey);
+          avg = {avg.w + v.w, avg.wx + v.wx, avg.wy + v.wy, avg.wxx + v.wxx, avg.wxy + v.wxy, avg.wyy + v.wyy};
+          ++count;
+        }
+      const double k = 1.0 / count;
+      const double x = g.x(i), y = g.y(j), phi = obstacle(x, y);
+      const double value = avg.w * k;
+      const double xi = g.is_interior(i, j) ? force[g.dof(i, j, kW)] / (g.h * g.h) : 0.0;
+      const Moments m = bending_moments(avg.wxx * k, avg.wxy * k, avg.wyy * k, nu);
+      f.x.push_back(x);
+      f.y.push_back(y);
+      f.w.push_back(value);
+      f.wx.push_back(avg.wx * k);
+      f.wy.push_back(avg.wy * k);
+      f.wxx.push_back(avg.wxx * k);
+      f.wxy.push_back(avg.wxy * k);
+      f.wyy.push_back(avg.wyy * k);
+      f.phi.push_back(phi);
+      f.xi.push_back(xi);
+      f.m11.push_back(m.m11);
+      f.m12.push_back(m.m12);
+      f.m22.push_back(m.m22);
+      f.contact.push_back(xi > 0);
+    }
+  return f;
+}
+
+}  // namespace plate

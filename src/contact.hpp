@@ -1,0 +1,47 @@
+// What the paper computes after the solve: w and its derivatives anywhere, the contact force (9),
+// the bending moments and the contact set.
+#pragma once
+#include <vector>
+
+#include "problem.hpp"
+
+namespace plate {
+
+struct PointValues {
+  double w, wx, wy, wxx, wxy, wyy;
+};
+
+// Hermite evaluation of w_h at (x, y); throws std::invalid_argument outside the rectangle.
+PointValues evaluate(const Grid& g, const VectorXd& w, double x, double y);
+
+struct Moments {
+  double m11, m12, m22;
+};
+
+// Kirchhoff bending moments with D = 1: m11 = -(w11 + nu w22), m12 = -(1 - nu) w12,
+// m22 = -(w22 + nu w11). (The paper's printed matrix has +nu where -nu belongs.)
+Moments bending_moments(double wxx, double wxy, double wyy, double nu);
+
+// xi_p = -eps^{-1} beta(w)(x_p) = eps^{-1} max(phi_p - (S w)_p, 0) >= 0 at the sample points.
+VectorXd contact_force_density(const Problem& p, const VectorXd& w, double eps);
+
+// sum_p W_p xi_p: the total upward force of the obstacle on the plate.
+double total_contact_force(const Problem& p, const VectorXd& xi);
+
+// Relative residual of the discrete penalised equation (2a) at w:
+// ||K w - F + eps^{-1} S^T W beta(S w)|| / (||K w|| + ||F||). Zero at the exact w_eps.
+double penalty_residual(const Problem& p, const VectorXd& w, double eps);
+
+// Everything the paper reports "at the nodes of the grid", at all (nx+1)(ny+1) nodes.
+// Second derivatives jump across element edges; at a node we average the elements around it.
+// The contact force at node r is (S^T W xi)_r / h^2, the force on its value unknown per unit
+// area: with nodal sampling this is xi at the node itself; with Gauss sampling, where nodes are
+// not sample points, it is the force of the neighbouring points weighted by the node's basis function.
+struct NodalFields {
+  std::vector<double> x, y, w, wx, wy, wxx, wxy, wyy, phi, xi, m11, m12, m22;
+  std::vector<bool> contact;  // xi > 0
+  int size() const { return static_cast<int>(x.size()); }
+};
+NodalFields nodal_fields(const Problem& p, const VectorXd& w, const Field& obstacle, double eps, double nu);
+
+}  // namespace plate

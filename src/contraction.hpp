@@ -1,0 +1,27 @@
+// The contraction of the linear scheme (5a), Theorem 2 and its estimate (6), at the discrete level.
+// lambda_1h = min over v with S v != 0 of (v^T K v) / (v^T M v), M = S^T W S, is the discrete
+// counterpart of the clamped plate's first eigenvalue (1294.93... on the unit square).
+#pragma once
+#include "sparse.hpp"
+
+namespace plate {
+
+struct Eigenpair {
+  double lambda = 0;
+  VectorXd v;
+  int iterations = 0;
+};
+
+// Smallest eigenvalue of K v = lambda M v (K positive definite, M semidefinite) by inverse
+// iteration v <- K^{-1} M v with the Rayleigh quotient; stops when lambda changes by < rtol.
+Eigenpair smallest_eigenpair(const SpMat& K, const SpMat& M, double rtol = 1e-12, int max_iter = 500);
+
+// Sharp factor by which the linear scheme shrinks ||S(w^{n+1} - w^n)||_W per iteration:
+// 1 / (1 + eps lambda_1h). Attained by the first eigenmode when no constraint is active.
+double sharp_contraction(double lambda1h, double eps);
+
+// Eq. (6): the paper's factor rho = (1 + c eps) / ((1 + 2 c eps)(1 + eps / c)), with c the
+// Friedrichs constant in ||s||_0^2 <= c ||Lap s||_0^2, c = 1 / lambda_1.
+double paper_rho(double c, double eps);
+
+}  // namespace plate

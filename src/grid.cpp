@@ -1,0 +1,42 @@
+// Grid construction and the element-to-unknown map.
+#include "grid.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace plate {
+
+Grid make_grid(int nx, double lx, double ly) {
+  if (nx < 1) throw std::invalid_argument("n (cells along x) must be >= 1, got " + std::to_string(nx));
+  if (!(std::isfinite(lx) && lx > 0)) throw std::invalid_argument("lx (rectangle width) must be finite and > 0");
+  if (!(std::isfinite(ly) && ly > 0)) throw std::invalid_argument("ly (rectangle height) must be finite and > 0");
+  Grid g;
+  g.nx = nx;
+  g.h = lx / nx;
+  const double cells = ly / g.h;
+  g.ny = static_cast<int>(std::lround(cells));
+  if (g.ny < 1 || std::abs(cells - g.ny) > 1e-9 * cells)
+    throw std::invalid_argument("ly (rectangle height) must be a whole number of cells of side h = lx/n; got ly/h = " +
+                                std::to_string(cells));
+  return g;
+}
+
+std::array<int, 16> Grid::element_dofs(int ex, int ey) const {
+  std::array<int, 16> d{};
+  for (int a = 0; a < 4; ++a)
+    for (int c = 0; c < 4; ++c) d[4 * a + c] = dof(ex + (a & 1), ey + (a >> 1), c);
+  return d;
+}
+
+bool Grid::locate(double x, double y, int& ex, int& ey, double& t, double& s) const {
+  const double slack = 1e-12 * h;
+  if (!(x >= -slack && x <= lx() + slack && y >= -slack && y <= ly() + slack)) return false;
+  ex = std::min(nx - 1, std::max(0, static_cast<int>(std::floor(x / h))));
+  ey = std::min(ny - 1, std::max(0, static_cast<int>(std::floor(y / h))));
+  t = x / h - ex;
+  s = y / h - ey;
+  return true;
+}
+
+}  // namespace plate

@@ -1,0 +1,191 @@
+// plate: solves one case of the clamped plate over a rigid obstacle and writes its fields and summary.
+// Run `plate --help`. The defaults are the paper's experiment: unit square, h = 1/4, f = 0,
+// the cylinder of height R = 0.0625 and radius 0.25 at the centre, linear scheme (5a).
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "atomic_file.hpp"
+#include "contraction.hpp"
+#include "fields.hpp"
+#include "summary.hpp"
+
+namespace {
+
+// Exit codes beyond CLI11's own (which it uses for options it cannot parse).
+constexpr int kBadInput = 2, kNotConverged = 3, kFailure = 4;
+
+const CLI::Validator kFinitePositive(
+    [](std::string& s) {
+      const double v = std::strtod(s.c_str(), nullptr);
+      return (std::isfinite(v) && v > 0) ? std::string() : "must be a finite number > 0, got " + s;
+    },
+    "FINITE > 0");
+const CLI::Validator kCellCount(
+    [](std::string& s) {
+      char* end = nullptr;
+      const long v = std::strtol(s.c_str(), &end, 10);
+      if (end == s.c_str() || *end != '\0') return "must be a whole number, got " + s;
+      return (v >= 1 && v <= (1 << 16)) ? std::string() : "must be between 1 and 65536, got " + s;
+    },
+    "INT in [1, 65536]");
+const CLI::Validator kFinite(
+    [](std::string& s) {
+      const double v = std::strtod(s.c_str(), nullptr);
+      return std::isfinite(v) ? std::string() : "must be a finite number, got " + s;
+    },
+    "FINITE");
+
+std::pair<double, double> parse_pair(const std::string& option, const std::string& text) {
+  std::istringstream in(text);
+  double x, y;
+  char comma;
+  if (!(in >> x >> comma >> y) || comma != ',' || !(in >> std::ws).eof() || !std::isfinite(x) || !std::isfinite(y))
+    throw std::invalid_argument(option + " must be two finite numbers 'x,y', got '" + text + "'");
+  return {x, y};
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace plate;
+  CLI::App app{
+      "plate: a clamped elastic plate over a rigid obstacle (V. A. Kovtunenko, 1994).\n"
+      "Finds w with Lap^2 w = f + xi, w >= phi, xi >= 0, xi (w - phi) = 0 on [0,lx] x [0,ly],\n"
+      "w = dw/dn = 0 on the boundary, by the penalty problem (2): Lap^2 w + eps^-1 min(w - phi, 0) = f,\n"
+      "solved by the linear scheme (5a) or the nonlinear scheme (3a) with Bogner-Fox-Schmit elements (8),\n"
+      "eps_s = eps-start * 10^-s until successive eps levels agree within tol. Starting guess w = 0.\n"
+      "Exit status: 0 converged, 2 bad input, 3 not converged (outputs are still written), 4 other failure."};
+  app.get_formatter()->column_width(34);
+
+  int n = 4;
+  double lx = 1.0, ly = 1.0;
+  std::string obstacle = "cylinder", load = "0", scheme = "linear", sampling = "gauss";
+  double R = 0.0625, radius = 0.25, nu = 0.3;
+  std::string centre = "0.5,0.5";
+  SolveOptions opt;
+  double eps_fixed = 0;
+  std::vector<std::string> points;
+  std::string csv_path, json_path;
+  bool rate = false, quiet = false;
+
+  app.add_option("-n,--cells", n, "cells along x; the mesh size is h = lx / n")
+      ->check(kCellCount)
+      ->capture_default_str();
+  app.add_option("--lx", lx, "width of the rectangle")->check(kFinitePositive)->capture_default_str();
+  app.add_option("--ly", ly, "height of the rectangle (a whole number of cells)")
+      ->check(kFinitePositive)
+      ->capture_default_str();
+  app.add_option("--obstacle", obstacle,
+                 "'cylinder' (height R on the disk of --radius around --centre, no constraint outside) "
+                 "or an expression in x, y (muparser; 'inf' is infinity: -inf means no constraint)")
+      ->capture_default_str();
+  app.add_option("-R,--obstacle-height", R, "height R of the cylinder")->check(kFinite)->capture_default_str();
+  app.add_option("--radius", radius, "radius of the cylinder")->check(kFinitePositive)->capture_default_str();
+  app.add_option("--centre", centre, "centre of the cylinder, 'x,y'")->capture_default_str();
+  app.add_option("--load", load, "load f(x, y): a number or an expression in x, y")->capture_default_str();
+  app.add_option("--scheme", scheme, "linear: scheme (5a), one factorisation per eps; nonlinear: scheme (3a)")
+      ->check(CLI::IsMember({"linear", "nonlinear"}))
+      ->capture_default_str();
+  app.add_option("--sampling", sampling,
+                 "where w >= phi is imposed: gauss (4x4 Gauss points per element, (8) as printed) "
+                 "or nodes (grid nodes, weight h^2)")
+      ->check(CLI::IsMember({"gauss", "nodes"}))
+      ->capture_default_str();
+  auto* eps_opt = app.add_option("--eps", eps_fixed, "solve at this eps only (no continuation)")->check(kFinitePositive);
+  app.add_option("--eps-start", opt.eps_start, "first eps of the continuation")
+      ->check(kFinitePositive)
+      ->capture_default_str()
+      ->excludes(eps_opt);
+  app.add_option("--eps-min", opt.eps_min, "smallest eps tried before the continuation is declared failed")
+      ->check(kFinitePositive)
+      ->capture_default_str()
+      ->excludes(eps_opt);
+  app.add_option("--tol", opt.tol, "OS: stop when steps, and successive eps levels, are within tol (max over nodes)")
+      ->check(kFinitePositive)
+      ->capture_default_str();
+  app.add_option("--max-iter", opt.max_iter, "iteration cap per eps level; reaching it is a failure")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--nu", nu, "Poisson's ratio for the bending moments")
+      ->check(CLI::Range(-1.0, 0.5))
+      ->capture_default_str();
+  app.add_option("--point", points, "report w at 'x,y' (repeatable)");
+  app.add_option("--csv", csv_path, "write the nodal fields (CSV) here");
+  app.add_option("--json", json_path, "write the summary (JSON) here");
+  auto* rate_flag = app.add_flag("--rate", rate, "also compute lambda_1h and the linear scheme's contraction factors");
+  auto* quiet_flag = app.add_flag("-q,--quiet", quiet, "print nothing but errors");
+  CLI11_PARSE(app, argc, argv);
+
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    const Grid g = make_grid(n, lx, ly);
+    Field phi;
+    if (obstacle == "cylinder") {
+      const auto [cx, cy] = parse_pair("--centre", centre);
+      phi = cylinder(cx, cy, radius, R);
+    } else {
+      phi = expression("--obstacle", obstacle);
+    }
+    const Field f = expression("--load", load);
+    opt.scheme = scheme == "linear" ? Scheme::Linear : Scheme::Nonlinear;
+    if (*eps_opt) {
+      opt.eps_start = eps_fixed;
+      opt.continuation = false;
+    }
+    validate(opt);
+    Report report;
+    for (const auto& p : points) report.points.push_back(parse_pair("--point", p));
+    for (const auto& [x, y] : report.points)
+      if (x < 0 || x > g.lx() || y < 0 || y > g.ly())
+        throw std::invalid_argument("--point " + std::to_string(x) + "," + std::to_string(y) +
+                                    " is outside the plate");
+    // Echo the effective value of every option, given or default, so a run can be reproduced from its output.
+    for (const auto* o : app.get_options()) {
+      if (o->get_name() == "--help") continue;
+      std::string value = o->count() ? CLI::detail::join(o->reduced_results(), " ") : o->get_default_str();
+      if (value.empty()) value = "(none)";
+      if (o == rate_flag || o == quiet_flag) value = o->count() ? "true" : "false";
+      report.config.emplace_back(o->get_name(), value);
+    }
+
+    if (!quiet) {
+      std::cout << "plate: " << g.nx << " x " << g.ny << " cells, h = " << g.h << ", " << g.unknowns()
+                << " unknowns\n";
+      for (const auto& [k, v] : report.config) std::cout << "  " << k << " = " << v << "\n";
+    }
+    const SamplingKind kind = sampling == "gauss" ? SamplingKind::Gauss : SamplingKind::Nodes;
+    const Problem problem = make_problem(g, kind, phi, f);
+    report.seconds_assemble = seconds_since(t0);
+
+    const SolveResult result = solve(problem, opt);
+    const NodalFields nodes = nodal_fields(problem, result.w, phi, result.eps, nu);
+    if (rate) report.lambda1h = smallest_eigenpair(problem.K, problem.M).lambda;
+    report.problem = &problem;
+    report.result = &result;
+    report.nodes = &nodes;
+    report.seconds_total = seconds_since(t0);
+
+    if (!csv_path.empty()) write_file_atomically(csv_path, nodal_csv(nodes));
+    if (!json_path.empty()) write_file_atomically(json_path, summary_json(report));
+    if (!quiet) std::cout << summary_text(report);
+    if (!result.converged) {
+      std::cerr << "plate: error: " << result.message << "\n";
+      return kNotConverged;
+    }
+    return 0;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "plate: bad input: " << e.what() << "\n";
+    return kBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "plate: error: " << e.what() << "\n";
+    return kFailure;
+  }
+}

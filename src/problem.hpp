@@ -1,0 +1,26 @@
+// One discrete obstacle problem: the grid, the sampling of the constraint, the obstacle at the
+// sample points, and the assembled stiffness, mass and load. Built once, solved many times.
+#pragma once
+#include "assemble.hpp"
+#include "sampling.hpp"
+
+namespace plate {
+
+struct Problem {
+  Grid grid;
+  Sampling sampling;
+  VectorXd phi;  // obstacle at the sample points; -inf where there is no constraint
+  SpMat K;       // (Lap u, Lap v)
+  SpMat M;       // S^T W S
+  VectorXd F;    // (f, u)
+};
+
+// Throws std::invalid_argument (naming "obstacle" or "load") for NaN or +inf values, and for an
+// obstacle that is not below zero on the boundary (then no clamped plate can satisfy w >= phi).
+Problem make_problem(const Grid& g, SamplingKind kind, const Field& obstacle, const Field& load);
+
+// Samples phi along the boundary (every node and 8 points per cell edge) and throws
+// std::invalid_argument if phi >= 0 or NaN at any of them.
+void check_obstacle_on_boundary(const Grid& g, const Field& obstacle);
+
+}  // namespace plate

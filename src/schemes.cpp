@@ -1,0 +1,152 @@
+// The iterations (3a) and (5a) at the discrete level and the eps continuation around them.
+// With S the sampling matrix and W its weights, (8) reads
+//   (K + eps^{-1} S^T W S) w^{n+1} = F + eps^{-1} S^T W max(S w^n, phi),
+// because s - beta(s) = max(s, phi) pointwise.
+#include "schemes.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace plate {
+
+const char* to_string(Scheme s) { return s == Scheme::Linear ? "linear" : "nonlinear"; }
+
+int SolveResult::total_iterations() const {
+  int n = 0;
+  for (const auto& l : levels) n += l.iterations;
+  return n;
+}
+
+double max_nodal_abs(const VectorXd& w) {
+  // Unknowns are interleaved (w, w_x, w_y, w_xy) per node: the values are every fourth entry.
+  const Eigen::Map<const VectorXd, 0, Eigen::InnerStride<4>> values(w.data(), w.size() / 4);
+  return values.size() ? values.cwiseAbs().maxCoeff() : 0.0;
+}
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+void factorize_timed(Cholesky& chol, const SpMat& A, double* seconds) {
+  const auto t0 = Clock::now();
+  chol.factorize(A);
+  if (seconds) *seconds += seconds_since(t0);
+}
+
+// One step of a level: solve, measure the step in the C-norm, report, test the first stopping rule.
+bool step_and_check(const Cholesky& chol, const VectorXd& rhs, VectorXd& w, double eps, LevelRecord& r,
+                    const SolveOptions& o) {
+  VectorXd next = chol.solve(rhs);
+  r.last_step = max_nodal_abs(next - w);
+  w.swap(next);
+  ++r.iterations;
+  if (o.on_iterate) o.on_iterate(eps, r.iterations, w);
+  return r.last_step <= o.tol;
+}
+}  // namespace
+
+// Eq. (5a): linear scheme, one factorisation per eps.
+LevelRecord linear_scheme_level(const Problem& p, double eps, VectorXd& w, Cholesky& chol, const SolveOptions& o,
+                                double* seconds_factorize) {
+  LevelRecord r;
+  r.eps = eps;
+  const SpMat A = p.K + (1.0 / eps) * p.M;
+  factorize_timed(chol, A, seconds_factorize);
+  r.factorizations = 1;
+  const VectorXd scaled_w = p.sampling.weights / eps;
+  while (r.iterations < o.max_iter) {
+    const VectorXd lifted = (p.sampling.S * w).cwiseMax(p.phi);  // w - beta(w) = max(w, phi)
+    const VectorXd rhs = p.F + p.sampling.S.transpose() * scaled_w.cwiseProduct(lifted);
+    if (step_and_check(chol, rhs, w, eps, r, o)) {
+      r.converged = true;
+      break;
+    }
+  }
+  return r;
+}
+
+// Eq. (3a): nonlinear scheme, refactorised when the active set K(w^n) changes.
+LevelRecord nonlinear_scheme_level(const Problem& p, double eps, VectorXd& w, Cholesky& chol,
+                                   const SolveOptions& o, double* seconds_factorize) {
+  LevelRecord r;
+  r.eps = eps;
+  const int npts = p.sampling.size();
+  Eigen::Matrix<bool, Eigen::Dynamic, 1> active, previous;
+  VectorXd d(npts), d_phi(npts);
+  while (r.iterations < o.max_iter) {
+    active = ((p.sampling.S * w) - p.phi).array() < 0.0;  // K(w^n) = 1 where w^n < phi
+    if (r.iterations == 0 || active != previous) {
+      for (int i = 0; i < npts; ++i) {
+        d[i] = active[i] ? p.sampling.weights[i] / eps : 0.0;
+        d_phi[i] = active[i] ? d[i] * p.phi[i] : 0.0;  // phi is finite wherever it can be active
+      }
+      // K's pattern contains every S^T D S, so the symbolic analysis of K serves every factorisation.
+      const SpMat A = p.K + weighted_gram(p.sampling.S, d, p.grid.unknowns());
+      factorize_timed(chol, A, seconds_factorize);
+      ++r.factorizations;
+      previous = active;
+    }
+    const VectorXd rhs = p.F + p.sampling.S.transpose() * d_phi;
+    if (step_and_check(chol, rhs, w, eps, r, o)) {
+      r.converged = true;
+      break;
+    }
+  }
+  return r;
+}
+
+void validate(const SolveOptions& o) {
+  auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw std::invalid_argument(what);
+  };
+  require(std::isfinite(o.tol) && o.tol > 0, "tol must be finite and > 0");
+  require(o.max_iter >= 1, "max-iter must be >= 1");
+  require(std::isfinite(o.eps_start) && o.eps_start > 0, "eps must be finite and > 0");
+  require(std::isfinite(o.eps_min) && o.eps_min > 0, "eps-min must be finite and > 0");
+  require(!o.continuation || o.eps_min <= o.eps_start, "eps-min must not exceed the starting eps");
+}
+
+SolveResult solve(const Problem& p, const SolveOptions& o) {
+  validate(o);
+  SolveResult res;
+  res.w = VectorXd::Zero(p.grid.unknowns());  // starting guess w^{eps,0} = 0
+  const auto t_start = Clock::now();
+  Cholesky chol;
+  chol.analyze(p.K);
+  res.seconds_factorize += seconds_since(t_start);
+  VectorXd previous_level;
+  for (int s = 0;; ++s) {
+    // Divide by an exact power of ten rather than repeatedly by 10, so eps_s has no drift.
+    const double eps = o.eps_start / std::pow(10.0, s);
+    LevelRecord r = (o.scheme == Scheme::Linear)
+                        ? linear_scheme_level(p, eps, res.w, chol, o, &res.seconds_factorize)
+                        : nonlinear_scheme_level(p, eps, res.w, chol, o, &res.seconds_factorize);
+    res.eps = eps;
+    if (previous_level.size()) r.level_change = max_nodal_abs(res.w - previous_level);
+    res.levels.push_back(r);
+    std::ostringstream m;
+    if (!r.converged) {
+      m << to_string(o.scheme) << " scheme did not converge at eps = " << eps << ": " << o.max_iter
+        << " iterations (max-iter) left a step of " << r.last_step << " > tol = " << o.tol;
+      res.message = m.str();
+      break;
+    }
+    if (!o.continuation || (r.level_change >= 0 && r.level_change <= o.tol)) {
+      res.converged = true;
+      break;
+    }
+    if (eps / 10.0 < o.eps_min * (1 - 1e-12)) {
+      m << "eps continuation did not converge: at eps-min = " << o.eps_min
+        << " successive eps levels still differ by " << r.level_change << " > tol = " << o.tol;
+      res.message = m.str();
+      break;
+    }
+    previous_level = res.w;
+  }
+  res.seconds_iterate = seconds_since(t_start) - res.seconds_factorize;
+  return res;
+}
+
+}  // namespace plate

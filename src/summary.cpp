@@ -1,0 +1,165 @@
+// Formatting of the outputs. Numbers carry 10 significant digits; JSON has no infinity, so an
+// absent obstacle (-inf) is written as null.
+#include "summary.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "contraction.hpp"
+
+namespace plate {
+
+namespace {
+std::string num(double v) {
+  if (!std::isfinite(v)) return "null";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.10g", v);
+  return b;
+}
+std::string csv_num(double v) {
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.10g", v);
+  return b;
+}
+std::string quoted(const std::string& s) {
+  std::string o = "\"";
+  for (char ch : s) {
+    if (ch == '"' || ch == '\\') {
+      o += '\\';
+      o += ch;
+    } else if (static_cast<unsigned char>(ch) < 0x20) {
+      char b[8];
+      std::snprintf(b, sizeof b, "\\u%04x", ch);
+      o += b;
+    } else {
+      o += ch;
+    }
+  }
+  return o + "\"";
+}
+
+struct Extremes {
+  int argmax_w = 0;
+  double max_w = -INFINITY, max_abs_w = 0, max_xi = 0, max_abs_m12 = 0;
+  std::vector<int> contact;
+};
+Extremes extremes(const NodalFields& f) {
+  Extremes e;
+  for (int k = 0; k < f.size(); ++k) {
+    if (f.w[k] > e.max_w) e.max_w = f.w[k], e.argmax_w = k;
+    e.max_abs_w = std::max(e.max_abs_w, std::abs(f.w[k]));
+    e.max_xi = std::max(e.max_xi, f.xi[k]);
+    e.max_abs_m12 = std::max(e.max_abs_m12, std::abs(f.m12[k]));
+    if (f.contact[k]) e.contact.push_back(k);
+  }
+  return e;
+}
+}  // namespace
+
+std::string nodal_csv(const NodalFields& f) {
+  std::ostringstream o;
+  o << "# plate: nodal fields; w and derivatives (second ones averaged over the elements at the node),\n"
+       "# obstacle phi (-inf: none), contact force density xi = eps^-1 max(phi - w, 0), moments (D = 1)\n"
+       "x,y,w,w_x,w_y,w_xx,w_xy,w_yy,phi,xi,m11,m12,m22,contact\n";
+  for (int k = 0; k < f.size(); ++k)
+    o << csv_num(f.x[k]) << ',' << csv_num(f.y[k]) << ',' << csv_num(f.w[k]) << ',' << csv_num(f.wx[k]) << ','
+      << csv_num(f.wy[k]) << ',' << csv_num(f.wxx[k]) << ',' << csv_num(f.wxy[k]) << ',' << csv_num(f.wyy[k]) << ','
+      << csv_num(f.phi[k]) << ',' << csv_num(f.xi[k]) << ',' << csv_num(f.m11[k]) << ',' << csv_num(f.m12[k])
+      << ',' << csv_num(f.m22[k]) << ',' << (f.contact[k] ? 1 : 0) << '\n';
+  return o.str();
+}
+
+std::string summary_json(const Report& r) {
+  const Problem& p = *r.problem;
+  const SolveResult& s = *r.result;
+  const NodalFields& f = *r.nodes;
+  const Extremes e = extremes(f);
+  const VectorXd xi = contact_force_density(p, s.w, s.eps);
+  const double violation = (p.phi - p.sampling.S * s.w).cwiseMax(0.0).maxCoeff();
+  std::ostringstream o;
+  o << "{\n  \"config\": {";
+  for (size_t i = 0; i < r.config.size(); ++i)
+    o << (i ? ", " : "") << quoted(r.config[i].first) << ": " << quoted(r.config[i].second);
+  o << "},\n  \"grid\": {\"nx\": " << p.grid.nx << ", \"ny\": " << p.grid.ny << ", \"h\": " << num(p.grid.h)
+    << ", \"unknowns\": " << p.grid.unknowns() << ", \"sample_points\": " << p.sampling.size() << "},\n";
+  o << "  \"converged\": " << (s.converged ? "true" : "false") << ",\n";
+  o << "  \"message\": " << quoted(s.message) << ",\n";
+  o << "  \"eps_final\": " << num(s.eps) << ",\n  \"total_iterations\": " << s.total_iterations() << ",\n";
+  o << "  \"levels\": [";
+  for (size_t i = 0; i < s.levels.size(); ++i) {
+    const LevelRecord& l = s.levels[i];
+    o << (i ? ",\n    " : "\n    ") << "{\"eps\": " << num(l.eps) << ", \"iterations\": " << l.iterations
+      << ", \"factorizations\": " << l.factorizations << ", \"last_step\": " << num(l.last_step)
+      << ", \"level_change\": " << (l.level_change < 0 ? "null" : num(l.level_change))
+      << ", \"converged\": " << (l.converged ? "true" : "false") << "}";
+  }
+  o << "\n  ],\n";
+  o << "  \"max_w\": " << num(e.max_w) << ",\n  \"max_w_at\": [" << num(f.x[e.argmax_w]) << ", "
+    << num(f.y[e.argmax_w]) << "],\n  \"max_abs_w\": " << num(e.max_abs_w) << ",\n";
+  o << "  \"w_at_points\": [";
+  for (size_t i = 0; i < r.points.size(); ++i) {
+    const auto [x, y] = r.points[i];
+    const PointValues v = evaluate(p.grid, s.w, x, y);
+    o << (i ? ", " : "") << "{\"x\": " << num(x) << ", \"y\": " << num(y) << ", \"w\": " << num(v.w) << "}";
+  }
+  o << "],\n";
+  o << "  \"total_contact_force\": " << num(total_contact_force(p, xi)) << ",\n";
+  o << "  \"max_xi_samples\": " << num(xi.size() ? xi.maxCoeff() : 0.0) << ",\n";
+  o << "  \"max_xi_nodes\": " << num(e.max_xi) << ",\n";
+  o << "  \"max_abs_m12\": " << num(e.max_abs_m12) << ",\n";
+  o << "  \"constraint_violation\": " << num(violation) << ",\n";
+  const double residual = penalty_residual(p, s.w, s.eps);
+  o << "  \"penalty_residual\": " << num(residual) << ",\n";
+  o << "  \"residual_ok\": " << (residual <= kResidualLimit ? "true" : "false") << ",\n";
+  o << "  \"contact_nodes\": [";
+  for (size_t i = 0; i < e.contact.size(); ++i)
+    o << (i ? ", " : "") << "[" << num(f.x[e.contact[i]]) << ", " << num(f.y[e.contact[i]]) << "]";
+  o << "],\n";
+  if (r.lambda1h > 0) {
+    o << "  \"contraction\": {\"lambda1h\": " << num(r.lambda1h)
+      << ", \"sharp_factor\": " << num(sharp_contraction(r.lambda1h, s.eps))
+      << ", \"paper_rho\": " << num(paper_rho(1.0 / r.lambda1h, s.eps)) << ", \"at_eps\": " << num(s.eps) << "},\n";
+  }
+  o << "  \"seconds\": {\"assemble\": " << num(r.seconds_assemble) << ", \"factorize\": "
+    << num(s.seconds_factorize) << ", \"iterate\": " << num(s.seconds_iterate) << ", \"total\": "
+    << num(r.seconds_total) << "}\n}\n";
+  return o.str();
+}
+
+std::string summary_text(const Report& r) {
+  const SolveResult& s = *r.result;
+  const NodalFields& f = *r.nodes;
+  const Extremes e = extremes(f);
+  const VectorXd xi = contact_force_density(*r.problem, s.w, s.eps);
+  std::ostringstream o;
+  o << (s.converged ? "converged" : "NOT CONVERGED: " + s.message) << "\n";
+  o << "levels (eps: iterations):";
+  for (const auto& l : s.levels) o << " " << num(l.eps) << ":" << l.iterations;
+  o << "  total " << s.total_iterations() << "\n";
+  o << "max w = " << num(e.max_w) << " at (" << num(f.x[e.argmax_w]) << ", " << num(f.y[e.argmax_w]) << ")\n";
+  for (const auto& [x, y] : r.points)
+    o << "w(" << num(x) << ", " << num(y) << ") = " << num(evaluate(r.problem->grid, s.w, x, y).w) << "\n";
+  o << "total contact force = " << num(total_contact_force(*r.problem, xi)) << ", max xi at nodes = "
+    << num(e.max_xi) << ", max |m12| at nodes = " << num(e.max_abs_m12) << ", contact nodes: " << e.contact.size()
+    << "\n";
+  const double residual = penalty_residual(*r.problem, s.w, s.eps);
+  o << "relative residual of (2a) at the last iterate: " << num(residual) << "\n";
+  if (residual > kResidualLimit)
+    o << "WARNING: the stopping rules were met, but the last iterate does not solve (2a) at eps = " << num(s.eps)
+      << " (relative residual " << num(residual) << " > " << num(kResidualLimit)
+      << "): steps shrink by only 1/(1 + eps lambda_1h) each, so small steps do not mean a small error. "
+         "Use --scheme nonlinear, a smaller --tol, or a larger --eps-min.\n";
+  if (r.lambda1h > 0)
+    o << "lambda_1h = " << num(r.lambda1h) << ", contraction per iteration at eps = " << num(s.eps) << ": sharp "
+      << num(sharp_contraction(r.lambda1h, s.eps)) << ", paper's rho " << num(paper_rho(1.0 / r.lambda1h, s.eps))
+      << "\n";
+  char b[128];
+  std::snprintf(b, sizeof b, "time: assemble %.3g s, factorise %.3g s, iterate %.3g s, total %.3g s\n",
+                r.seconds_assemble, s.seconds_factorize, s.seconds_iterate, r.seconds_total);
+  o << b;
+  return o.str();
+}
+
+}  // namespace plate

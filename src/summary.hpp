@@ -1,0 +1,31 @@
+// The `plate` program's outputs: the nodal fields as CSV and the summary as JSON.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "contact.hpp"
+#include "schemes.hpp"
+
+namespace plate {
+
+struct Report {
+  std::vector<std::pair<std::string, std::string>> config;  // every option, echoed as given
+  const Problem* problem = nullptr;
+  const SolveResult* result = nullptr;
+  const NodalFields* nodes = nullptr;
+  std::vector<std::pair<double, double>> points;  // where the user asked for w
+  double lambda1h = -1;                           // < 0: not computed
+  double seconds_assemble = 0, seconds_total = 0;
+};
+
+// The paper's stopping rules look at steps, not at the equation: at small eps the linear scheme's
+// steps fall below tol long before it solves (2a). We flag a last iterate whose relative residual
+// of (2a) exceeds this.
+constexpr double kResidualLimit = 1e-6;
+
+std::string nodal_csv(const NodalFields& f);
+std::string summary_json(const Report& r);
+std::string summary_text(const Report& r);  // the few lines printed at the end of a run
+
+}  // namespace plate

@@ -1,0 +1,93 @@
+// Theorem 2 at the discrete level. With e_n = w^n - w^{n-1} and ||v||_M = ||S v||_W, (6) gives
+//   ||e_{n+1}||_M <= ||e_n||_M / (1 + eps lambda_1h),
+// lambda_1h the smallest eigenvalue of K relative to M = S^T W S; without contact it is attained.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "contraction.hpp"
+#include "paper_case.hpp"
+#include "schemes.hpp"
+
+using namespace plate;
+
+// Bjorstad & Tjostheim, "High precision solutions of two fourth order eigenvalue problems",
+// Computing 63 (1999): first eigenvalue of Lap^2 u = lambda u, u = du/dn = 0 on the unit square.
+constexpr double kClampedSquareLambda1 = 1294.9339795917;
+
+TEST(Contraction, Lambda1hConvergesToTheClampedPlateEigenvalue) {
+  double previous = INFINITY;
+  for (int n : {16, 32, 64}) {
+    const Problem g = paper_problem(n, SamplingKind::Gauss), v = paper_problem(n, SamplingKind::Nodes);
+    const double lg = smallest_eigenpair(g.K, g.M).lambda, ln = smallest_eigenpair(v.K, v.M).lambda;
+    std::printf("  n = %2d  lambda_1h: gauss %.7f  nodes %.7f  (published %.7f)\n", n, lg, ln, kClampedSquareLambda1);
+    // Conforming elements with the exact mass: a Rayleigh-Ritz upper bound, decreasing with h.
+    EXPECT_GE(lg, kClampedSquareLambda1 * (1 - 1e-12));
+    EXPECT_LT(lg, previous);
+    previous = lg;
+    EXPECT_NEAR(ln, kClampedSquareLambda1, 2e-4 * kClampedSquareLambda1 * (16.0 / n) * (16.0 / n));
+  }
+  EXPECT_NEAR(previous, kClampedSquareLambda1, 2e-7 * kClampedSquareLambda1);  // n = 64
+}
+
+namespace {
+// M-norms of the steps of the linear scheme at fixed eps, for `iterations` iterations.
+std::vector<double> step_norms(const Problem& p, double eps, int iterations) {
+  std::vector<double> steps;
+  VectorXd last = VectorXd::Zero(p.grid.unknowns());
+  SolveOptions o;
+  o.scheme = Scheme::Linear;
+  o.continuation = false;
+  o.eps_start = eps;
+  o.tol = 1e-300;  // never met: we stop on max_iter and read the steps
+  o.max_iter = iterations;
+  o.on_iterate = [&](double, int, const VectorXd& w) {
+    steps.push_back(m_norm(p, w - last));
+    last = w;
+  };
+  solve(p, o);
+  return steps;
+}
+}  // namespace
+
+TEST(Contraction, WithoutContactTheLinearSchemeContractsByOneOverOnePlusEpsLambda) {
+  for (SamplingKind kind : {SamplingKind::Gauss, SamplingKind::Nodes}) {
+    // Uniform load f = 1 lifts the plate; phi = -1 is never reached, so every step is linear.
+    const Problem p = make_problem(make_grid(8), kind, [](double, double) { return -1.0; },
+                                   [](double, double) { return 1.0; });
+    const double lambda = smallest_eigenpair(p.K, p.M).lambda;
+    for (double eps : {1e-3, 3e-4, 1e-4}) {
+      const double q = sharp_contraction(lambda, eps);
+      const std::vector<double> s = step_norms(p, eps, 400);
+      // Read the factor where the steps have fallen to 1e-7 of the first: the faster modes have
+      // died out (they shrink relative to the first by (1 + eps l1) / (1 + eps l2) per step) and
+      // rounding has not yet set in.
+      size_t k = 1;
+      while (k + 1 < s.size() && s[k] > 1e-7 * s[0]) ++k;
+      const double measured = s[k] / s[k - 1];
+      std::printf("  %s eps = %g: lambda_1h = %.6f, measured factor %.9f, 1/(1 + eps lambda_1h) = %.9f, "
+                  "paper's rho = %.9f\n",
+                  to_string(kind), eps, lambda, measured, q, paper_rho(1 / lambda, eps));
+      EXPECT_NEAR(measured, q, 1e-6 * q);
+      // The paper's rho bounds the energy E_n, which shrinks by q^2 per step; it is weaker than q^2.
+      EXPECT_GT(paper_rho(1 / lambda, eps), q * q);
+    }
+  }
+}
+
+TEST(Contraction, WithContactNoStepIsSlowerThanTheBound) {
+  for (SamplingKind kind : {SamplingKind::Gauss, SamplingKind::Nodes}) {
+    const Problem p = paper_problem(8, kind);
+    const double lambda = smallest_eigenpair(p.K, p.M).lambda;
+    for (double eps : {1e-3, 1e-4}) {
+      const double q = sharp_contraction(lambda, eps);
+      const std::vector<double> s = step_norms(p, eps, 200);
+      double worst = 0;
+      for (size_t k = 1; k < s.size(); ++k)
+        if (s[k - 1] > 1e-12 * s[0]) worst = std::max(worst, s[k] / s[k - 1]);
+      std::printf("  %s eps = %g: slowest step ratio %.9f, bound %.9f\n", to_string(kind), eps, worst, q);
+      // Active points contract faster (max(s, phi) is flat there), so the bound need not be attained.
+      EXPECT_LE(worst, q * (1 + 1e-9));
+    }
+  }
+}

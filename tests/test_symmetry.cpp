@@ -1,0 +1,59 @@
+// Exact invariances of the paper's problem: positive homogeneity in R (f = 0) and the eight
+// symmetries of the square. Both hold for the penalised and discrete problems too.
+#include <gtest/gtest.h>
+
+#include "paper_case.hpp"
+#include "schemes.hpp"
+
+using namespace plate;
+
+namespace {
+VectorXd penalised(const Problem& p, double eps = 1e-6) {
+  SolveOptions o;
+  o.scheme = Scheme::Nonlinear;
+  o.continuation = false;
+  o.eps_start = eps;
+  o.tol = 1e-15;
+  const SolveResult r = solve(p, o);
+  EXPECT_TRUE(r.converged) << r.message;
+  return r.w;
+}
+
+// Largest asymmetry of the nodal values over the eight symmetries of the n x n grid.
+double asymmetry(const Grid& g, const VectorXd& w) {
+  const int n = g.nx;
+  double worst = 0;
+  for (int j = 1; j < n; ++j)
+    for (int i = 1; i < n; ++i) {
+      const double v = w[g.dof(i, j, kW)];
+      for (auto [a, b] : {std::pair{j, i}, {n - i, j}, {i, n - j}, {n - i, n - j}, {n - j, i}, {j, n - i}, {n - j, n - i}})
+        worst = std::max(worst, std::abs(v - w[g.dof(a, b, kW)]));
+    }
+  return worst;
+}
+}  // namespace
+
+TEST(Invariance, DeflectionIsPositivelyHomogeneousInR) {
+  for (SamplingKind kind : {SamplingKind::Gauss, SamplingKind::Nodes}) {
+    const VectorXd w1 = penalised(paper_problem(8, kind, 0.0625));
+    const VectorXd w2 = penalised(paper_problem(8, kind, 0.125));
+    const VectorXd w3 = penalised(paper_problem(8, kind, 3 * 0.0625));
+    // Doubling is exact in binary floating point, so the whole computation doubles exactly.
+    EXPECT_LE(max_nodal_abs(w2 - 2 * w1), 1e-15 * max_nodal_abs(w2)) << to_string(kind);
+    EXPECT_LE(max_nodal_abs(w3 - 3 * w1), 1e-13 * max_nodal_abs(w3)) << to_string(kind);
+  }
+}
+
+TEST(Invariance, DeflectionHasTheEightSymmetriesOfTheSquare) {
+  for (SamplingKind kind : {SamplingKind::Gauss, SamplingKind::Nodes}) {
+    const Problem p = paper_problem(8, kind);
+    const VectorXd w = penalised(p);
+    EXPECT_LE(asymmetry(p.grid, w), 1e-13 * max_nodal_abs(w)) << to_string(kind);
+  }
+  // The check sees asymmetry when there is some: a load f = x tilts the plate.
+  const Grid g = make_grid(8);
+  const Problem tilted = make_problem(g, SamplingKind::Nodes, cylinder(0.5, 0.5, 0.25, 0.0625),
+                                      [](double x, double) { return 10 * x; });
+  const VectorXd w = penalised(tilted);
+  EXPECT_GT(asymmetry(g, w), 1e-6 * max_nodal_abs(w));
+}
