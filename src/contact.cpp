@@ -41,6 +41,7 @@ VectorXd contact_force_density(const Problem& p, const VectorXd& w, double eps) 
 
 double total_contact_force(const Problem& p, const VectorXd& xi) { return p.sampling.weights.dot(xi); }
 
+// Eq. (2a): residual of the discrete penalised equation.
 double penalty_residual(const Problem& p, const VectorXd& w, double eps) {
   const VectorXd Kw = p.K * w;
   const VectorXd xi = contact_force_density(p, w, eps);
