@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
 # Installs the Debian packages this repository needs, and nothing when all are present.
+# libopenblas0-pthread becomes the system BLAS (update-alternatives): CHOLMOD's supernodal
+# factorisation of the BFS matrix (n = 128, 64516 unknowns, 3.2 GFlop) took 1.21 s with the
+# reference BLAS and 0.37-0.67 s with OpenBLAS on this 2-core machine.
 # Usage: scripts/deps.sh   (called by `make deps`; root or sudo, otherwise prints the apt-get line)
 set -euo pipefail
 
 packages=(
   g++ make cmake pkg-config
   libeigen3-dev libsuitesparse-dev libmuparser-dev libcli11-dev
+  libopenblas0-pthread
   libgtest-dev libgmock-dev libbenchmark-dev
   freefem++ libfreefem++ gmsh
   pandoc gnuplot-nox
