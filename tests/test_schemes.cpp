@@ -55,7 +55,9 @@ TEST(Schemes, ConstraintViolationShrinksLikeEps) {
     for (size_t k = 1; k < v.size(); ++k) {
       std::printf("  %s: eps 1e-%zu: violation %.3e, ratio to the previous %.4f\n", to_string(kind), k + 3, v[k],
                   v[k - 1] / v[k]);
-      if (k + 3 >= 9) EXPECT_NEAR(v[k - 1] / v[k], 10.0, 0.05);
+      if (k + 3 >= 9) {
+        EXPECT_NEAR(v[k - 1] / v[k], 10.0, 0.05);
+      }
     }
   }
 }
