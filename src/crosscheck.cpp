@@ -29,7 +29,7 @@ CheckValues solve_ours(int n, SamplingKind kind, const CrossSettings& s) {
   o.eps_min = s.eps_min;
   const SolveResult r = solve(p, o);
   CheckValues v;
-  v.code = std::string("BFS (this code), ") + to_string(kind) + " sampling";
+  v.code = std::string("bfs-") + to_string(kind);
   v.grid = std::to_string(n) + " x " + std::to_string(n);
   v.h = g.h;
   v.unknowns = g.unknowns();
@@ -98,9 +98,9 @@ double json_number(const std::string& json, const std::string& key) {
 
 CheckValues freefem_values(const std::string& json, double lc) {
   CheckValues v;
-  v.code = "FreeFEM HCT (reference/penalty_hct.edp)";
+  v.code = "freefem-hct";
   std::ostringstream grid;
-  grid << "gmsh lc = " << lc << ", " << json_number(json, "triangles") << " triangles";
+  grid << "gmsh lc = " << lc << " (" << json_number(json, "triangles") << " triangles)";
   v.grid = grid.str();
   v.h = lc;
   v.unknowns = static_cast<int>(json_number(json, "unknowns"));

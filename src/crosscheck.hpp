@@ -12,7 +12,7 @@ namespace plate {
 // What both codes report, at the same points: the centre (0.5, 0.5), where max w is, a point on
 // the contact circle (0.5, 0.25), and two points between the circle and the clamped edge.
 struct CheckValues {
-  std::string code, grid;
+  std::string code, grid;  // no commas: they go into CSV columns
   double h = 0;  // cell side (ours) or gmsh mesh size lc (FreeFEM)
   int unknowns = 0;
   bool converged = false;

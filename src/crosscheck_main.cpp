@@ -90,7 +90,8 @@ int main(int argc, char** argv) {
 
     std::ostringstream csv, md, timings;
     csv << "# crosscheck: the paper's problem (f = 0, R = " << s.R << ") by two codes; made by build/crosscheck\n"
-        << "# code, grid, h (cell side; gmsh lc for FreeFEM), unknowns, converged, iterations, final eps,\n"
+        << "# code: freefem-hct (reference/penalty_hct.edp), bfs-gauss or bfs-nodes (this code, constraint at\n"
+        << "# Gauss points or at nodes); grid, h (cell side; gmsh lc for FreeFEM), unknowns, converged, iterations, final eps,\n"
         << "# max w, w(0.5,0.25) on the contact circle, w(0.5,0.125), w(0.25,0.25), total contact force\n"
         << "code,grid,h,unknowns,converged,iterations,eps_final,max_w,w_0.5_0.25,w_0.5_0.125,w_0.25_0.25,total_force\n";
     timings << "# crosscheck run times in seconds (not byte-identical between runs)\ncode,grid,seconds\n";
