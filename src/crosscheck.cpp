@@ -122,6 +122,12 @@ CheckValues freefem_values(const std::string& json, double lc) {
   return v;
 }
 
+std::vector<double> values_of(const std::vector<CheckValues>& runs, double CheckValues::*field) {
+  std::vector<double> v;
+  for (const auto& r : runs) v.push_back(r.*field);
+  return v;
+}
+
 double last_increment(const std::vector<double>& values) {
   if (values.size() < 2) throw std::invalid_argument("last_increment: need at least two grids");
   return std::abs(values.back() - values[values.size() - 2]);

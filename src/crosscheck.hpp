@@ -19,6 +19,9 @@ struct CheckValues {
   int iterations = 0;
   double eps_final = 0, max_w = 0, w_rim = 0, w_mid = 0, w_diag = 0, force = 0, seconds = 0;
 };
+// One quantity across a sequence of grids, coarse to fine.
+std::vector<double> values_of(const std::vector<CheckValues>& runs, double CheckValues::*field);
+
 constexpr double kCheckPoints[3][2] = {{0.5, 0.25}, {0.5, 0.125}, {0.25, 0.25}};
 
 struct CrossSettings {

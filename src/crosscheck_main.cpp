@@ -36,11 +36,7 @@ std::string convergence_note(const std::vector<double>& q) {
 struct Series {
   std::string name;
   std::vector<CheckValues> runs;
-  std::vector<double> of(double CheckValues::*field) const {
-    std::vector<double> v;
-    for (const auto& r : runs) v.push_back(r.*field);
-    return v;
-  }
+  std::vector<double> of(double CheckValues::*field) const { return values_of(runs, field); }
 };
 }  // namespace
 
@@ -50,7 +46,7 @@ int main(int argc, char** argv) {
   std::vector<double> lcs = {0.1, 0.05, 0.025, 0.0125};
   std::vector<int> ns = {16, 32, 64, 128};
   std::string geo = "reference/square_with_circle.geo", edp = "reference/penalty_hct.edp";
-  std::string work = "build/crosscheck", out = "results";
+  std::string work = "build/crosscheck-work", out = "results";  // not build/crosscheck: the program
   CrossSettings s;
   app.add_option("--lc", lcs, "gmsh mesh sizes, coarse to fine, halving")->delimiter(',')->capture_default_str();
   app.add_option("--n", ns, "our grids n x n, coarse to fine, doubling")->delimiter(',')->capture_default_str();

@@ -36,15 +36,10 @@ TEST(CrossCode, FreeFemAndThisCodeAgreeOnThePapersProblem) {
     ours.push_back(solve_ours(n, SamplingKind::Gauss, s));
     ASSERT_TRUE(ours.back().converged) << "n = " << n;
   }
-  auto series = [](const std::vector<CheckValues>& v, double CheckValues::*f) {
-    std::vector<double> out;
-    for (const auto& r : v) out.push_back(r.*f);
-    return out;
-  };
   for (auto [name, field] : {std::pair{"max w", &CheckValues::max_w}, {"w(0.5, 0.25)", &CheckValues::w_rim},
                              {"total contact force", &CheckValues::force}}) {
     double diff, tol;
-    const bool ok = agree(series(ff, field), series(ours, field), &diff, &tol);
+    const bool ok = agree(values_of(ff, field), values_of(ours, field), &diff, &tol);
     std::printf("  %-20s FreeFEM %.6g  BFS %.6g  difference %.2e  tolerance %.2e\n", name, ff.back().*field,
                 ours.back().*field, diff, tol);
     EXPECT_TRUE(ok) << name;
