@@ -2,11 +2,21 @@
 # `make all` and `make test` install what is missing (make deps) and build first.
 BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
-BINS  := $(BUILD)/plate $(BUILD)/crosscheck $(BUILD)/plate_tests
+DRIVERS := $(BUILD)/table $(BUILD)/fig1 $(BUILD)/fig2 $(BUILD)/contraction
+BINS  := $(BUILD)/plate $(BUILD)/crosscheck $(BUILD)/plate_tests $(DRIVERS)
+PAPER_NUMBERS := reference/paper_numbers.csv
 
-.PHONY: all test deps build crosscheck clean help FORCE
+TABLES    := results/table.md results/table.csv results/table_fine.md results/table_fine.csv
+FIG1_DATA := results/fig1_points.csv results/fig1_surface.dat results/fig1_contact.dat
+FIG2_DATA := results/fig2.csv results/fig2_mesh.csv results/fig2_fit.md results/fig2_mesh.md
+FIGURES   := results/fig1.svg results/fig1.png results/fig2.svg results/fig2.png
+RESULTS   := $(TABLES) results/contraction.md $(FIG1_DATA) $(FIG2_DATA) $(FIGURES)
+PAPER_INPUTS := paper/paper.md paper/style.css $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp) \
+                $(RESULTS) results/crosscheck.md
 
-all: build ## build everything (later issues add results, figures and the paper)
+.PHONY: all test deps build results paper crosscheck clean help FORCE
+
+all: build results crosscheck paper ## build, then every result, figure and the document (about 10 min from scratch)
 
 help: ## list the targets
 	@grep -E '^[a-z]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 12
@@ -32,6 +42,37 @@ crosscheck: results/crosscheck.md ## FreeFEM (HCT, gmsh) against this code: resu
 
 results/crosscheck.md results/crosscheck.csv &: $(BUILD)/crosscheck reference/square_with_circle.geo reference/penalty_hct.edp | deps
 	$(BUILD)/crosscheck --out results --work $(BUILD)/crosscheck-work
+
+results: $(RESULTS) ## the paper's table, Fig. 1, Fig. 2 and the contraction check, in results/
+
+# Each driver writes its files whole (temporary file, then rename); gnuplot writes to a
+# temporary file that is renamed once it is complete.
+$(TABLES) &: $(BUILD)/table reference/paper_table.csv $(PAPER_NUMBERS)
+	$(BUILD)/table --out results
+
+results/contraction.md: $(BUILD)/contraction $(PAPER_NUMBERS)
+	$(BUILD)/contraction --out results
+
+$(FIG1_DATA) &: $(BUILD)/fig1 $(PAPER_NUMBERS)
+	$(BUILD)/fig1 --out results
+
+$(FIG2_DATA) &: $(BUILD)/fig2 $(PAPER_NUMBERS)
+	$(BUILD)/fig2 --out results
+
+results/fig1.svg results/fig1.png: $(FIG1_DATA)
+results/fig2.svg results/fig2.png: $(FIG2_DATA)
+results/%.svg: paper/figures/%.gp | deps
+	gnuplot -e "fmt='svg'; out='$@.tmp'" $< && mv $@.tmp $@
+results/%.png: paper/figures/%.gp | deps
+	gnuplot -e "fmt='png'; out='$@.tmp'" $< && mv $@.tmp $@
+
+paper: results/paper.html ## the literate document: results/paper.html (self-contained, opens offline)
+
+results/paper.html: $(PAPER_INPUTS) | deps
+	pandoc paper/paper.md --from markdown --to html5 --standalone --self-contained --mathml \
+	  --lua-filter paper/filters/equations.lua --lua-filter paper/filters/code.lua \
+	  --lua-filter paper/filters/include.lua --css paper/style.css --resource-path . \
+	  --toc --toc-depth 2 --output $@.tmp && mv $@.tmp $@
 
 clean: ## remove build products (not results/)
 	rm -rf $(BUILD)

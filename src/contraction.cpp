@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "cholesky.hpp"
+#include "schemes.hpp"
 
 namespace plate {
 
@@ -32,5 +33,41 @@ double sharp_contraction(double lambda1h, double eps) { return 1.0 / (1.0 + eps 
 
 // Eq. (6): the paper's contraction factor, kept to compare with the sharp one.
 double paper_rho(double c, double eps) { return (1.0 + c * eps) / ((1.0 + 2.0 * c * eps) * (1.0 + eps / c)); }
+
+double m_norm(const Problem& p, const VectorXd& v) {
+  const VectorXd sv = p.sampling.S * v;
+  return std::sqrt(sv.dot(p.sampling.weights.cwiseProduct(sv)));
+}
+
+std::vector<double> linear_step_norms(const Problem& p, double eps, int iterations) {
+  std::vector<double> steps;
+  VectorXd last = VectorXd::Zero(p.grid.unknowns());
+  SolveOptions o;
+  o.scheme = Scheme::Linear;
+  o.continuation = false;
+  o.eps_start = eps;
+  o.tol = 1e-300;  // never met: the run stops on max_iter and we read the steps
+  o.max_iter = iterations;
+  o.on_iterate = [&](double, int, const VectorXd& w) {
+    steps.push_back(m_norm(p, w - last));
+    last = w;
+  };
+  solve(p, o);
+  return steps;
+}
+
+double asymptotic_factor(const std::vector<double>& s) {
+  if (s.size() < 2) throw std::invalid_argument("asymptotic_factor: need two steps");
+  size_t k = 1;
+  while (k + 1 < s.size() && s[k] > 1e-7 * s[0]) ++k;
+  return s[k] / s[k - 1];
+}
+
+double slowest_factor(const std::vector<double>& s) {
+  double worst = 0;
+  for (size_t k = 1; k < s.size(); ++k)
+    if (s[k - 1] > 1e-12 * s[0]) worst = std::max(worst, s[k] / s[k - 1]);
+  return worst;
+}
 
 }  // namespace plate

@@ -2,7 +2,9 @@
 // lambda_1h = min over v with S v != 0 of (v^T K v) / (v^T M v), M = S^T W S, is the discrete
 // counterpart of the clamped plate's first eigenvalue (1294.93... on the unit square).
 #pragma once
-#include "sparse.hpp"
+#include <vector>
+
+#include "problem.hpp"
 
 namespace plate {
 
@@ -23,5 +25,19 @@ double sharp_contraction(double lambda1h, double eps);
 // Eq. (6): the paper's factor rho = (1 + c eps) / ((1 + 2 c eps)(1 + eps / c)), with c the
 // Friedrichs constant in ||s||_0^2 <= c ||Lap s||_0^2, c = 1 / lambda_1.
 double paper_rho(double c, double eps);
+
+// ||v||_M = ||S v||_W, the norm in which the contraction is proved (the L2 norm for Gauss sampling).
+double m_norm(const Problem& p, const VectorXd& v);
+
+// ||w^{n+1} - w^n||_M for n = 0 .. iterations - 1 of the linear scheme at fixed eps, from w^0 = 0.
+std::vector<double> linear_step_norms(const Problem& p, double eps, int iterations);
+
+// The factor per step read off a sequence of step norms where they have fallen to 1e-7 of the
+// first: the faster modes have died out (relative to the first they shrink by
+// (1 + eps l1) / (1 + eps l2) per step) and rounding has not yet set in.
+double asymptotic_factor(const std::vector<double>& steps);
+
+// The largest ratio of successive steps while they are above 1e-12 of the first.
+double slowest_factor(const std::vector<double>& steps);
 
 }  // namespace plate

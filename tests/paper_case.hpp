@@ -8,8 +8,4 @@ namespace plate {
 inline Problem paper_problem(int n, SamplingKind kind, double R = 0.0625) {
   return make_problem(make_grid(n), kind, cylinder(0.5, 0.5, 0.25, R), [](double, double) { return 0.0; });
 }
-inline double m_norm(const Problem& p, const VectorXd& v) {
-  const VectorXd sv = p.sampling.S * v;
-  return std::sqrt(sv.dot(p.sampling.weights.cwiseProduct(sv)));
-}
 }  // namespace plate

@@ -30,25 +30,6 @@ TEST(Contraction, Lambda1hConvergesToTheClampedPlateEigenvalue) {
   EXPECT_NEAR(previous, kClampedSquareLambda1, 2e-7 * kClampedSquareLambda1);  // n = 64
 }
 
-namespace {
-// M-norms of the steps of the linear scheme at fixed eps, for `iterations` iterations.
-std::vector<double> step_norms(const Problem& p, double eps, int iterations) {
-  std::vector<double> steps;
-  VectorXd last = VectorXd::Zero(p.grid.unknowns());
-  SolveOptions o;
-  o.scheme = Scheme::Linear;
-  o.continuation = false;
-  o.eps_start = eps;
-  o.tol = 1e-300;  // never met: we stop on max_iter and read the steps
-  o.max_iter = iterations;
-  o.on_iterate = [&](double, int, const VectorXd& w) {
-    steps.push_back(m_norm(p, w - last));
-    last = w;
-  };
-  solve(p, o);
-  return steps;
-}
-}  // namespace
 
 TEST(Contraction, WithoutContactTheLinearSchemeContractsByOneOverOnePlusEpsLambda) {
   for (SamplingKind kind : {SamplingKind::Gauss, SamplingKind::Nodes}) {
@@ -58,13 +39,7 @@ TEST(Contraction, WithoutContactTheLinearSchemeContractsByOneOverOnePlusEpsLambd
     const double lambda = smallest_eigenpair(p.K, p.M).lambda;
     for (double eps : {1e-3, 3e-4, 1e-4}) {
       const double q = sharp_contraction(lambda, eps);
-      const std::vector<double> s = step_norms(p, eps, 400);
-      // Read the factor where the steps have fallen to 1e-7 of the first: the faster modes have
-      // died out (they shrink relative to the first by (1 + eps l1) / (1 + eps l2) per step) and
-      // rounding has not yet set in.
-      size_t k = 1;
-      while (k + 1 < s.size() && s[k] > 1e-7 * s[0]) ++k;
-      const double measured = s[k] / s[k - 1];
+      const double measured = asymptotic_factor(linear_step_norms(p, eps, 400));
       std::printf("  %s eps = %g: lambda_1h = %.6f, measured factor %.9f, 1/(1 + eps lambda_1h) = %.9f, "
                   "paper's rho = %.9f\n",
                   to_string(kind), eps, lambda, measured, q, paper_rho(1 / lambda, eps));
@@ -81,10 +56,7 @@ TEST(Contraction, WithContactNoStepIsSlowerThanTheBound) {
     const double lambda = smallest_eigenpair(p.K, p.M).lambda;
     for (double eps : {1e-3, 1e-4}) {
       const double q = sharp_contraction(lambda, eps);
-      const std::vector<double> s = step_norms(p, eps, 200);
-      double worst = 0;
-      for (size_t k = 1; k < s.size(); ++k)
-        if (s[k - 1] > 1e-12 * s[0]) worst = std::max(worst, s[k] / s[k - 1]);
+      const double worst = slowest_factor(linear_step_norms(p, eps, 200));
       std::printf("  %s eps = %g: slowest step ratio %.9f, bound %.9f\n", to_string(kind), eps, worst, q);
       // Active points contract faster (max(s, phi) is flat there), so the bound need not be attained.
       EXPECT_LE(worst, q * (1 + 1e-9));

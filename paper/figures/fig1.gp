@@ -1,0 +1,63 @@
+# Fig. 1: (a) the domain, the obstacle disk, the paper's h = 1/4 grid and the check points
+# (results/fig1_points.csv); (b) the computed deflection (results/fig1_surface.dat) with the
+# sample points where the plate rests on the obstacle (results/fig1_contact.dat). Written by build/fig1.
+# Usage: gnuplot -e "fmt='svg'; out='results/fig1.svg'" paper/figures/fig1.gp   (fmt: svg or png)
+if (fmt eq 'svg') { set terminal svg size 1350,440 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 1350,440 font 'Helvetica,11' }
+set output out
+set multiplot layout 1,3
+
+set title '(a) the square, the h = 1/4 grid, the disk, check points'
+set size ratio -1
+set xrange [-0.05:1.05]
+set yrange [-0.05:1.05]
+set xtics 0,0.25,1
+set ytics 0,0.25,1
+do for [k=1:3] {
+  set arrow from k*0.25, 0 to k*0.25, 1 nohead lc rgb '#888888' lw 1.2 back
+  set arrow from 0, k*0.25 to 1, k*0.25 nohead lc rgb '#888888' lw 1.2 back
+}
+set object 1 rect from 0,0 to 1,1 fs empty border lc rgb 'black' lw 3 back
+set key outside below horizontal
+set parametric
+set trange [0:2*pi]
+set datafile separator ','
+plot 0.5 + 0.25*cos(t), 0.5 + 0.25*sin(t) with filledcurves lc rgb '#cfe0f5' title 'phi = R on the disk', \
+     0.5 + 0.25*cos(t), 0.5 + 0.25*sin(t) with lines lw 2 lc rgb '#1f4e8c' title 'contact circle (10)', \
+     'results/fig1_points.csv' using 1:2 with points pt 2 ps 2 lw 2 lc rgb '#c0392b' title 'check points'
+unset parametric
+unset arrow
+unset object 1
+unset key
+set datafile separator whitespace
+
+set title '(b) w (h = 1/32) from above; contact points in red'
+set size ratio -1
+set xrange [0:1]
+set yrange [0:1]
+set xtics 0,0.25,1
+set ytics 0,0.25,1
+set view map
+set pm3d map
+set palette rgbformulae 33,13,10
+set colorbox
+set cbrange [0:0.1]
+set contour base
+set cntrparam levels incremental 0, 0.01, 0.1
+unset clabel
+splot 'results/fig1_surface.dat' using 1:2:3 with pm3d nocontour notitle, \
+      'results/fig1_surface.dat' using 1:2:3 with lines nosurface lc rgb 'black' lw 0.5 notitle, \
+      'results/fig1_contact.dat' using 1:2:3 with points pt 7 ps 0.7 lc rgb '#c0392b' nocontour notitle
+unset contour
+unset colorbox
+
+set title '(c) the section y = 1/2: the plate rests on the rim'
+set size noratio
+set xrange [0:1]
+set yrange [-0.005:0.11]
+set xtics 0,0.25,1
+set ytics 0,0.02,0.1
+set xlabel 'x'
+set key inside top right
+plot 'results/fig1_surface.dat' index 0 every ::0 using 1:(abs($2 - 0.5) < 1e-9 ? $3 : NaN) with lines lw 2 lc rgb '#1f4e8c' title 'w(x, 1/2)', \
+     (x >= 0.25 && x <= 0.75 ? 0.0625 : NaN) with filledcurves y1=0 lc rgb '#cfe0f5' title 'obstacle phi'
+unset multiplot

@@ -1,0 +1,14 @@
+-- Generated tables are spliced in from results/ when the document is built:
+--   ::: {include="results/table.md"}
+--   :::
+-- becomes the Markdown of that file. A missing file stops the build: the document never shows a
+-- table that the build did not make.
+function Div(el)
+  local path = el.attributes["include"]
+  if not path then return nil end
+  local f = io.open(path, "r")
+  if not f then error("include.lua: cannot open " .. path .. " (run make results first)") end
+  local text = f:read("a")
+  f:close()
+  return pandoc.Div(pandoc.read(text, "markdown").blocks, {class = "included", ["data-source"] = path})
+end

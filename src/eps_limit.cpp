@@ -1,0 +1,43 @@
+// Exact discrete penalised solutions along eps_s = 10^{-s}, and their Richardson extrapolation.
+#include "eps_limit.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "schemes.hpp"
+
+namespace plate {
+
+std::vector<VectorXd> penalised_path(const Problem& p, double eps) {
+  SolveOptions o;
+  o.scheme = Scheme::Nonlinear;
+  o.tol = 0;  // once (3a) repeats its active set its step is exactly zero
+  o.max_iter = 200;
+  Cholesky chol;
+  chol.analyze(p.K);
+  VectorXd w = VectorXd::Zero(p.grid.unknowns());
+  std::vector<VectorXd> path;
+  for (int s = 0;; ++s) {
+    const double e = 0.1 / std::pow(10.0, s);
+    if (!nonlinear_scheme_level(p, e, w, chol, o).converged)
+      throw std::runtime_error("the nonlinear scheme did not settle at eps = " + std::to_string(e));
+    path.push_back(w);
+    if (e <= eps * (1 + 1e-12)) return path;
+  }
+}
+
+EpsLimit eps_limit(const Problem& p, double eps) {
+  const std::vector<VectorXd> path = penalised_path(p, eps);
+  if (path.size() < 3) throw std::runtime_error("eps_limit: eps must be at most 1e-3");
+  const VectorXd& w0 = path[path.size() - 1];  // eps
+  const VectorXd& w1 = path[path.size() - 2];  // 10 eps
+  const VectorXd& w2 = path[path.size() - 3];  // 100 eps
+  EpsLimit L;
+  L.eps = eps;
+  L.w = w0 + (w0 - w1) / 9.0;
+  L.ratio = max_nodal_abs(w1 - w2) / max_nodal_abs(w0 - w1);
+  L.estimate = max_nodal_abs(L.w - (w1 + (w1 - w2) / 9.0));
+  return L;
+}
+
+}  // namespace plate

@@ -1,0 +1,76 @@
+// fig1: writes the data of Fig. 1: results/fig1_points.csv (the check points where values are
+// reported), fig1_surface.dat (the computed deflection on a lattice, for gnuplot's splot) and
+// fig1_contact.dat (the sample points where the plate rests on the obstacle). `fig1 --help`.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "atomic_file.hpp"
+#include "contact.hpp"
+#include "crosscheck.hpp"
+#include "eps_limit.hpp"
+#include "fields.hpp"
+#include "published.hpp"
+
+using namespace plate;
+
+namespace {
+std::string fmt(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"fig1: the data of Fig. 1 (check points; the deflection of the paper's problem and its contact set)."};
+  std::string reference = "reference", out = "results", sampling = "gauss";
+  int n = 32, lattice = 64;
+  double eps = 1e-10;
+  app.add_option("--reference", reference, "folder with paper_numbers.csv")->check(CLI::ExistingDirectory)->capture_default_str();
+  app.add_option("--out", out, "folder for the outputs")->capture_default_str();
+  app.add_option("-n", n, "grid of the computed deflection, n x n cells")->check(CLI::Range(2, 1024))->capture_default_str();
+  app.add_option("--lattice", lattice, "the surface is evaluated on (lattice + 1)^2 points")->check(CLI::Range(2, 1000))->capture_default_str();
+  app.add_option("--sampling", sampling, "gauss or nodes")->check(CLI::IsMember({"gauss", "nodes"}))->capture_default_str();
+  app.add_option("--eps", eps, "penalty parameter (exact discrete w_eps)")->check(CLI::Range(1e-14, 1e-3))->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    const auto pub = read_paper_numbers(reference + "/paper_numbers.csv");
+    const Field phi = cylinder(published(pub, "obstacle_cx"), published(pub, "obstacle_cy"),
+                               published(pub, "obstacle_radius"), published(pub, "obstacle_height"));
+    const SamplingKind kind = sampling == "gauss" ? SamplingKind::Gauss : SamplingKind::Nodes;
+    const Grid g = make_grid(n);
+    const Problem p = make_problem(g, kind, phi, [](double, double) { return 0.0; });
+    const VectorXd w = penalised_path(p, eps).back();
+
+    std::ostringstream points, surface, contact;
+    points << "# Written by build/fig1: the check points of results/crosscheck.md and the table (x, y).\nx,y\n0.5,0.5\n";
+    for (const auto& c : kCheckPoints) points << c[0] << "," << c[1] << "\n";
+    surface << "# Written by build/fig1: w on a lattice, h = 1/" << n << ", " << sampling
+            << " sampling, eps = " << eps << ". Columns: x y w (blank line between rows).\n";
+    for (int j = 0; j <= lattice; ++j) {
+      for (int i = 0; i <= lattice; ++i) {
+        const double x = static_cast<double>(i) / lattice, y = static_cast<double>(j) / lattice;
+        surface << fmt("%.6f", x) << " " << fmt("%.6f", y) << " " << fmt("%.8e", evaluate(g, w, x, y).w) << "\n";
+      }
+      surface << "\n";
+    }
+    contact << "# Written by build/fig1: sample points where w_h < phi (the constraint is active). Columns: x y w.\n";
+    const VectorXd sw = p.sampling.S * w;
+    for (int k = 0; k < p.sampling.size(); ++k)
+      if (sw[k] < p.phi[k])
+        contact << fmt("%.6f", p.sampling.x[k]) << " " << fmt("%.6f", p.sampling.y[k]) << " " << fmt("%.8e", sw[k]) << "\n";
+    std::filesystem::create_directories(out);
+    write_file_atomically(out + "/fig1_points.csv", points.str());
+    write_file_atomically(out + "/fig1_surface.dat", surface.str());
+    write_file_atomically(out + "/fig1_contact.dat", contact.str());
+  } catch (const std::exception& e) {
+    std::cerr << "fig1: " << e.what() << "\n";
+    return 4;
+  }
+  return 0;
+}

@@ -1,0 +1,75 @@
+// Reading the small CSV files of reference/: '#' lines are comments, the first other line names
+// the columns, fields are separated by commas and never quoted.
+#include "published.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace plate {
+namespace {
+using Rows = std::vector<std::vector<std::string>>;
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream ss(line);
+  std::string field;
+  while (std::getline(ss, field, ',')) out.push_back(field);
+  return out;
+}
+
+// Data rows (header dropped) with at least `columns` fields.
+Rows read_rows(const std::string& path, std::size_t columns) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  Rows rows;
+  std::string line;
+  bool header = true;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (header) {
+      header = false;
+      continue;
+    }
+    auto f = split(line);
+    if (f.size() < columns) throw std::runtime_error(path + ": too few fields in \"" + line + "\"");
+    rows.push_back(std::move(f));
+  }
+  return rows;
+}
+
+double to_double(const std::string& path, const std::string& s) {
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(s, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != s.size()) throw std::runtime_error(path + ": \"" + s + "\" is not a number");
+  return v;
+}
+}  // namespace
+
+std::vector<PublishedRow> read_paper_table(const std::string& path) {
+  std::vector<PublishedRow> table;
+  for (const auto& f : read_rows(path, 3))
+    table.push_back({to_double(path, f[0]), static_cast<int>(to_double(path, f[1])),
+                     static_cast<int>(to_double(path, f[2]))});
+  if (table.empty()) throw std::runtime_error(path + ": no rows");
+  return table;
+}
+
+std::map<std::string, double> read_paper_numbers(const std::string& path) {
+  std::map<std::string, double> numbers;
+  for (const auto& f : read_rows(path, 2)) numbers[f[0]] = to_double(path, f[1]);
+  return numbers;
+}
+
+double published(const std::map<std::string, double>& numbers, const std::string& key) {
+  const auto it = numbers.find(key);
+  if (it == numbers.end()) throw std::runtime_error("reference/paper_numbers.csv has no key " + key);
+  return it->second;
+}
+
+}  // namespace plate

@@ -1,0 +1,160 @@
+// table: writes results/table.md and .csv: the paper's experiment (the table of Kovtunenko 1994)
+// rerun with both schemes and both samplings, on h = 1/4 and on finer grids, with the true error
+// of every stopped iterate. Run by `make results`; `table --help` lists the options.
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "atomic_file.hpp"
+#include "contact.hpp"
+#include "contraction.hpp"
+#include "eps_limit.hpp"
+#include "fields.hpp"
+#include "published.hpp"
+#include "schemes.hpp"
+
+using namespace plate;
+
+namespace {
+std::string fmt(const char* f, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+struct Run {
+  int iterations = 0;
+  double eps = 0, last_step = 0, error = 0, estimate = 0, residual = 0;
+  bool converged = false;
+};
+
+// One run of the paper's method at one tolerance, measured against the eps -> 0 limit.
+Run run(const Problem& p, Scheme scheme, double tol, const EpsLimit& limit, double lambda1h) {
+  SolveOptions o;
+  o.scheme = scheme;
+  o.tol = tol;
+  const SolveResult r = solve(p, o);
+  Run x;
+  x.iterations = r.total_iterations();
+  x.eps = r.eps;
+  x.converged = r.converged;
+  x.last_step = r.levels.back().last_step;
+  x.error = max_nodal_abs(r.w - limit.w);
+  x.residual = penalty_residual(p, r.w, r.eps);
+  // A posteriori: steps of (5a) shrink at least by q = 1/(1 + eps lambda_1h), so the distance to
+  // w_eps is at most q/(1-q) = 1/(eps lambda_1h) times the last step (in the M-norm; we apply
+  // it to the C-norm step as an estimate). (3a) reaches w_eps exactly: no such term.
+  x.estimate = scheme == Scheme::Linear ? x.last_step / (r.eps * lambda1h) : 0.0;
+  return x;
+}
+
+struct Case {
+  int n;
+  SamplingKind kind;
+  EpsLimit limit;
+  double lambda1h;
+  std::vector<std::pair<Run, Run>> runs;  // (linear, nonlinear) per published tolerance
+};
+
+std::string yes_no(bool b) { return b ? "yes" : "**no**"; }
+
+std::string markdown(const std::vector<Case>& cases, const std::vector<PublishedRow>& table, bool with_paper) {
+  std::ostringstream md;
+  for (const Case& c : cases) {
+    md << "\n**h = 1/" << c.n << ", " << to_string(c.kind) << " sampling** (" << 4 * (c.n - 1) * (c.n - 1)
+       << " unknowns; lambda_1h = " << fmt("%.4f", c.lambda1h) << "; reference error <= "
+       << fmt("%.1e", c.limit.estimate) << ", eps-ratio " << fmt("%.3f", c.limit.ratio) << ")\n\n";
+    md << "| OS |" << (with_paper ? " paper (5a) | GLT |" : "")
+       << " (5a) iterations | final eps | last step | error | estimate | stopped | (3a) iterations | final eps | error |\n";
+    md << "|---:|" << (with_paper ? "---:|---:|" : "") << "---:|---:|---:|---:|---:|:---:|---:|---:|---:|\n";
+    for (std::size_t i = 0; i < table.size(); ++i) {
+      const Run &l = c.runs[i].first, &nl = c.runs[i].second;
+      md << "| " << fmt("%.3g", table[i].tolerance) << " |";
+      if (with_paper) md << " " << table[i].iterations << " | " << table[i].iterations_glt << " |";
+      md << " " << l.iterations << " | " << fmt("%.0e", l.eps) << " | " << fmt("%.1e", l.last_step) << " | "
+         << fmt("%.1e", l.error) << " | " << fmt("%.1e", l.estimate) << " | " << yes_no(l.converged) << " | "
+         << nl.iterations << (nl.converged ? "" : " (no)") << " | " << fmt("%.0e", nl.eps) << " | "
+         << fmt("%.1e", nl.error) << " |\n";
+    }
+  }
+  return md.str();
+}
+
+std::string csv(const std::vector<Case>& cases, const std::vector<PublishedRow>& table) {
+  std::ostringstream o;
+  o << "# Written by build/table (make results). The paper's experiment: unit square, f = 0, phi = 0.0625 on the\n"
+       "# disk of radius 0.25 around (0.5, 0.5), w = 0 to start, eps_s = 0.1 * 10^-s, both stopping rules with OS.\n"
+       "# Columns: n (h = 1/n), sampling, tolerance OS, paper/GLT iterations (published, h = 1/4 only),\n"
+       "# scheme, iterations (all eps levels), final eps, converged (both rules met before eps-min = 1e-12),\n"
+       "# last_step = ||w^{n+1} - w^n||_C at the stop, error = ||w - w_ref||_C at the nodes against the eps -> 0\n"
+       "# limit w_ref, estimate = last_step / (eps lambda_1h) (linear scheme only), residual = relative residual\n"
+       "# of the discrete (2a) at the final eps.\n";
+  o << "n,sampling,tolerance,paper_iterations,glt_iterations,scheme,iterations,final_eps,converged,last_step,error,"
+       "estimate,residual\n";
+  for (const Case& c : cases)
+    for (std::size_t i = 0; i < table.size(); ++i)
+      for (int k = 0; k < 2; ++k) {
+        const Run& r = k == 0 ? c.runs[i].first : c.runs[i].second;
+        o << c.n << "," << to_string(c.kind) << "," << fmt("%.3g", table[i].tolerance) << ","
+          << (c.n == 4 ? std::to_string(table[i].iterations) : "") << ","
+          << (c.n == 4 ? std::to_string(table[i].iterations_glt) : "") << "," << (k == 0 ? "linear" : "nonlinear")
+          << "," << r.iterations << "," << fmt("%.0e", r.eps) << "," << (r.converged ? 1 : 0) << ","
+          << fmt("%.3e", r.last_step) << "," << fmt("%.3e", r.error) << "," << fmt("%.3e", r.estimate) << ","
+          << fmt("%.3e", r.residual) << "\n";
+      }
+  return o.str();
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"table: the paper's experiment (its table) rerun with the linear scheme (5a) and the nonlinear\n"
+               "scheme (3a), both samplings, on h = 1/4 and finer grids; writes table.md/.csv and table_fine.md/.csv."};
+  std::string reference = "reference", out = "results";
+  std::vector<int> fine = {8, 16, 32, 64};
+  app.add_option("--reference", reference, "folder with paper_table.csv and paper_numbers.csv")
+      ->check(CLI::ExistingDirectory)
+      ->capture_default_str();
+  app.add_option("--out", out, "folder for the tables")->capture_default_str();
+  app.add_option("--fine", fine, "finer grids n (h = 1/n) for the second table")
+      ->delimiter(',')
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    const auto table = read_paper_table(reference + "/paper_table.csv");
+    const auto numbers = read_paper_numbers(reference + "/paper_numbers.csv");
+    const int n_paper = static_cast<int>(std::lround(1.0 / published(numbers, "h")));
+    const Field phi = cylinder(published(numbers, "obstacle_cx"), published(numbers, "obstacle_cy"),
+                               published(numbers, "obstacle_radius"), published(numbers, "obstacle_height"));
+    const double load = published(numbers, "load");
+    std::vector<int> grids = {n_paper};
+    grids.insert(grids.end(), fine.begin(), fine.end());
+    std::vector<Case> paper_cases, fine_cases;
+    for (int n : grids)
+      for (SamplingKind kind : {SamplingKind::Gauss, SamplingKind::Nodes}) {
+        std::cerr << "table: h = 1/" << n << ", " << to_string(kind) << " sampling\n";
+        const Problem p = make_problem(make_grid(n), kind, phi, [load](double, double) { return load; });
+        Case c{n, kind, eps_limit(p), smallest_eigenpair(p.K, p.M).lambda, {}};
+        for (const auto& row : table)
+          c.runs.emplace_back(run(p, Scheme::Linear, row.tolerance, c.limit, c.lambda1h),
+                              run(p, Scheme::Nonlinear, row.tolerance, c.limit, c.lambda1h));
+        (n == n_paper ? paper_cases : fine_cases).push_back(std::move(c));
+      }
+    std::filesystem::create_directories(out);
+    const std::string head =
+        "<!-- Written by build/table (make results) from reference/paper_table.csv; do not edit. -->\n";
+    write_file_atomically(out + "/table.md", head + markdown(paper_cases, table, true));
+    write_file_atomically(out + "/table.csv", csv(paper_cases, table));
+    write_file_atomically(out + "/table_fine.md", head + markdown(fine_cases, table, false));
+    write_file_atomically(out + "/table_fine.csv", csv(fine_cases, table));
+  } catch (const std::exception& e) {
+    std::cerr << "table: " << e.what() << "\n";
+    return 4;
+  }
+  return 0;
+}
