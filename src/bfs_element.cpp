@@ -6,6 +6,7 @@
 
 namespace plate {
 
+// @region bfs-basis
 LocalBasis bfs_basis(double t, double s, double h) {
   const Hermite1D X = hermite_physical(t, h), Y = hermite_physical(s, h);
   LocalBasis b;
@@ -23,6 +24,7 @@ LocalBasis bfs_basis(double t, double s, double h) {
     }
   return b;
 }
+// @end bfs-basis
 
 namespace {
 // Sum over the 4 x 4 Gauss points of weight * g g^T, g chosen from the basis.
@@ -39,10 +41,12 @@ Matrix16 integrate_gram(double h, Pick pick) {
 }
 }  // namespace
 
+// @region bfs-stiffness
 // Eq. (8), first term: the element matrix of (Lap u_h, Lap v_h).
 Matrix16 bfs_stiffness(double h) {
   return integrate_gram(h, [](const LocalBasis& b) -> Vector16 { return b.dxx + b.dyy; });
 }
+// @end bfs-stiffness
 
 Matrix16 bfs_mass(double h) {
   return integrate_gram(h, [](const LocalBasis& b) -> Vector16 { return b.v; });

@@ -29,18 +29,23 @@ PointValues evaluate(const Grid& g, const VectorXd& w, double x, double y) {
   return evaluate_in(g, w, ex, ey, t, s);
 }
 
+// @region moments
 // Moments after (9), with Kirchhoff's sign of nu.
 Moments bending_moments(double wxx, double wxy, double wyy, double nu) {
   return {-(wxx + nu * wyy), -(1.0 - nu) * wxy, -(wyy + nu * wxx)};
 }
+// @end moments
 
+// @region contact-force
 // Eq. (9): contact force density xi = -eps^{-1} beta(w) at the sample points.
 VectorXd contact_force_density(const Problem& p, const VectorXd& w, double eps) {
   return (p.phi - p.sampling.S * w).cwiseMax(0.0) / eps;
 }
+// @end contact-force
 
 double total_contact_force(const Problem& p, const VectorXd& xi) { return p.sampling.weights.dot(xi); }
 
+// @region penalty-residual
 // Eq. (2a): residual of the discrete penalised equation.
 double penalty_residual(const Problem& p, const VectorXd& w, double eps) {
   const VectorXd Kw = p.K * w;
@@ -49,6 +54,7 @@ double penalty_residual(const Problem& p, const VectorXd& w, double eps) {
   const double scale = Kw.norm() + p.F.norm();
   return scale > 0 ? r.norm() / scale : r.norm();
 }
+// @end penalty-residual
 
 NodalFields nodal_fields(const Problem& p, const VectorXd& w, const Field& obstacle, double eps, double nu) {
   const Grid& g = p.grid;

@@ -29,10 +29,12 @@ Eigenpair smallest_eigenpair(const SpMat& K, const SpMat& M, double rtol, int ma
   throw std::runtime_error("smallest_eigenpair: inverse iteration did not converge");
 }
 
+// @region contraction-factors
 double sharp_contraction(double lambda1h, double eps) { return 1.0 / (1.0 + eps * lambda1h); }
 
 // Eq. (6): the paper's contraction factor, kept to compare with the sharp one.
 double paper_rho(double c, double eps) { return (1.0 + c * eps) / ((1.0 + 2.0 * c * eps) * (1.0 + eps / c)); }
+// @end contraction-factors
 
 double m_norm(const Problem& p, const VectorXd& v) {
   const VectorXd sv = p.sampling.S * v;

@@ -9,19 +9,12 @@
 #include <sstream>
 
 #include "atomic_file.hpp"
+#include "format.hpp"
 #include "contraction.hpp"
 #include "fields.hpp"
 #include "published.hpp"
 
 using namespace plate;
-
-namespace {
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"contraction: Theorem 2 of the paper checked on the discrete problem; writes contraction.md."};

@@ -10,18 +10,13 @@
 #include <sstream>
 
 #include "atomic_file.hpp"
+#include "format.hpp"
 #include "crosscheck.hpp"
 
 using namespace plate;
 
 namespace {
 constexpr double kPublishedUniformCentre = 0.00126532;  // Timoshenko & Woinowsky-Krieger, Table 35
-
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
 
 // Observed order and Richardson limit from the last three values (h halving each time), when the
 // last two increments have the same sign; otherwise the sequence is not yet regular.

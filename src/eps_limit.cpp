@@ -26,6 +26,7 @@ std::vector<VectorXd> penalised_path(const Problem& p, double eps) {
   }
 }
 
+// @region eps-limit
 EpsLimit eps_limit(const Problem& p, double eps) {
   const std::vector<VectorXd> path = penalised_path(p, eps);
   if (path.size() < 3) throw std::runtime_error("eps_limit: eps must be at most 1e-3");
@@ -39,5 +40,6 @@ EpsLimit eps_limit(const Problem& p, double eps) {
   L.estimate = max_nodal_abs(L.w - (w1 + (w1 - w2) / 9.0));
   return L;
 }
+// @end eps-limit
 
 }  // namespace plate

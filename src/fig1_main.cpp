@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "atomic_file.hpp"
+#include "format.hpp"
 #include "contact.hpp"
 #include "crosscheck.hpp"
 #include "eps_limit.hpp"
@@ -16,14 +17,6 @@
 #include "published.hpp"
 
 using namespace plate;
-
-namespace {
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"fig1: the data of Fig. 1 (check points; the deflection of the paper's problem and its contact set)."};

@@ -22,7 +22,8 @@ struct Grid {
   int unknowns() const { return 4 * interior_nodes(); }
   int elements() const { return nx * ny; }
 
-  // Index of an interior node, row by row; -1 on the boundary, where w = dw/dn = 0.
+  // Eq. (2b): w = dw/dn = 0 on the boundary, imposed by giving boundary nodes no unknowns.
+  // Index of an interior node, row by row; -1 on the boundary.
   int node(int i, int j) const { return is_interior(i, j) ? (j - 1) * (nx - 1) + (i - 1) : -1; }
   int dof(int i, int j, int c) const { return is_interior(i, j) ? 4 * node(i, j) + c : -1; }
 

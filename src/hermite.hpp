@@ -11,6 +11,7 @@ struct Hermite1D {
   std::array<double, 4> d0, d1, d2;
 };
 
+// @region hermite-cubics
 inline Hermite1D hermite_cubics(double t) {
   const double t2 = t * t, t3 = t2 * t;
   Hermite1D h;
@@ -19,6 +20,7 @@ inline Hermite1D hermite_cubics(double t) {
   h.d2 = {-6 + 12 * t, -4 + 6 * t, 6 - 12 * t, -2 + 6 * t};
   return h;
 }
+// @end hermite-cubics
 
 // Physical basis on a cell of width h: the slope functions carry a factor h so that their
 // x-derivative is 1 at their node, and each x-derivative divides by h.

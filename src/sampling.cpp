@@ -44,6 +44,7 @@ Sampling gauss_points(const Grid& g) {
   return s;
 }
 
+// @region nodal-sampling
 Sampling grid_nodes(const Grid& g) {
   const int npts = g.interior_nodes();
   Sampling s{SamplingKind::Nodes, {}, {}, VectorXd::Constant(npts, g.h * g.h), RowSpMat(npts, g.unknowns())};
@@ -59,6 +60,7 @@ Sampling grid_nodes(const Grid& g) {
   s.S.finalize();
   return s;
 }
+// @end nodal-sampling
 
 }  // namespace
 

@@ -47,6 +47,7 @@ bool step_and_check(const Cholesky& chol, const VectorXd& rhs, VectorXd& w, doub
 }
 }  // namespace
 
+// @region linear-scheme
 // Eq. (5a): linear scheme, one factorisation per eps.
 LevelRecord linear_scheme_level(const Problem& p, double eps, VectorXd& w, Cholesky& chol, const SolveOptions& o,
                                 double* seconds_factorize) {
@@ -66,7 +67,9 @@ LevelRecord linear_scheme_level(const Problem& p, double eps, VectorXd& w, Chole
   }
   return r;
 }
+// @end linear-scheme
 
+// @region nonlinear-scheme
 // Eq. (3a): nonlinear scheme, refactorised when the active set K(w^n) changes.
 LevelRecord nonlinear_scheme_level(const Problem& p, double eps, VectorXd& w, Cholesky& chol,
                                    const SolveOptions& o, double* seconds_factorize) {
@@ -96,6 +99,7 @@ LevelRecord nonlinear_scheme_level(const Problem& p, double eps, VectorXd& w, Ch
   }
   return r;
 }
+// @end nonlinear-scheme
 
 void validate(const SolveOptions& o) {
   auto require = [](bool ok, const std::string& what) {
@@ -117,6 +121,7 @@ SolveResult solve(const Problem& p, const SolveOptions& o) {
   chol.analyze(p.K);
   res.seconds_factorize += seconds_since(t_start);
   VectorXd previous_level;
+// @region continuation
   for (int s = 0;; ++s) {
     // Divide by an exact power of ten rather than repeatedly by 10, so eps_s has no drift.
     const double eps = o.eps_start / std::pow(10.0, s);
@@ -145,6 +150,7 @@ SolveResult solve(const Problem& p, const SolveOptions& o) {
     }
     previous_level = res.w;
   }
+// @end continuation
   res.seconds_iterate = seconds_since(t_start) - res.seconds_factorize;
   return res;
 }

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "atomic_file.hpp"
+#include "format.hpp"
 #include "contact.hpp"
 #include "contraction.hpp"
 #include "eps_limit.hpp"
@@ -20,12 +21,6 @@
 using namespace plate;
 
 namespace {
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-
 struct Run {
   int iterations = 0;
   double eps = 0, last_step = 0, error = 0, estimate = 0, residual = 0;

@@ -1,7 +1,8 @@
 -- Generated tables are spliced in from results/ when the document is built:
 --   ::: {include="results/table.md"}
 --   :::
--- becomes the Markdown of that file. A missing file stops the build: the document never shows a
+-- becomes the Markdown of that file, its headings moved two levels down so that they sit under
+-- the section that includes them. A missing file stops the build: the document never shows a
 -- table that the build did not make.
 function Div(el)
   local path = el.attributes["include"]
@@ -10,5 +11,8 @@ function Div(el)
   if not f then error("include.lua: cannot open " .. path .. " (run make results first)") end
   local text = f:read("a")
   f:close()
-  return pandoc.Div(pandoc.read(text, "markdown").blocks, {class = "included", ["data-source"] = path})
+  local blocks = pandoc.read(text, "markdown").blocks:walk({
+    Header = function(h) h.level = math.min(h.level + 2, 6); return h end,
+  })
+  return pandoc.Div(blocks, {class = "included", ["data-source"] = path})
 end

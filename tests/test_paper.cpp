@@ -1,0 +1,99 @@
+// The document and the code must not drift. paper/paper.md names code regions and numbers
+// equations; these tests fail when a named region is missing from src/, when a numbered equation
+// of the paper has no code tagged "Eq. (N)" (unless the document lists it as derivation-only),
+// and when code is tagged with an equation the document does not derive.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "published.hpp"
+
+namespace {
+namespace fs = std::filesystem;
+const fs::path kRoot = PLATE_SOURCE_DIR;
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  EXPECT_TRUE(in) << "cannot read " << p;
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::set<std::string> matches(const std::string& text, const std::regex& re, int group = 1) {
+  std::set<std::string> out;
+  for (std::sregex_iterator it(text.begin(), text.end(), re), end; it != end; ++it) out.insert((*it)[group]);
+  return out;
+}
+
+std::string all_sources() {
+  std::string s;
+  for (const auto& e : fs::directory_iterator(kRoot / "src"))
+    if (e.path().extension() == ".cpp" || e.path().extension() == ".hpp") s += slurp(e.path());
+  return s;
+}
+}  // namespace
+
+TEST(Paper, EveryCodeRegionItNamesExistsInSrc) {
+  const std::string doc = slurp(kRoot / "paper/paper.md");
+  const std::regex block(R"re(file="([^"]+)" region="([^"]+)")re");
+  int count = 0;
+  for (std::sregex_iterator it(doc.begin(), doc.end(), block), end; it != end; ++it, ++count) {
+    const std::string file = (*it)[1], name = (*it)[2];
+    const std::string code = slurp(kRoot / file);
+    const auto open = code.find("// @region " + name + "\n"), close = code.find("// @end " + name + "\n");
+    EXPECT_NE(open, std::string::npos) << file << " has no region " << name;
+    EXPECT_NE(close, std::string::npos) << file << " never closes region " << name;
+    if (open != std::string::npos && close != std::string::npos) {
+      EXPECT_LT(open, close) << name;
+    }
+  }
+  EXPECT_GE(count, 10) << "the document shows fewer code regions than expected";
+}
+
+TEST(Paper, NumberedEquationsAndTaggedCodeMatch) {
+  const std::string doc = slurp(kRoot / "paper/paper.md");
+  const std::set<std::string> in_doc = matches(doc, std::regex(R"(\\tag\{([0-9]+[a-z]?)\})"));
+  const std::set<std::string> in_code = matches(all_sources(), std::regex(R"(Eq\. \(([0-9]+[a-z]?)\))"));
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(doc, m, std::regex(R"(derivation-only:([^\n]*))"))) << "no derivation-only line";
+  const std::string only_line = m[1];
+  const std::set<std::string> derivation_only = matches(only_line, std::regex(R"(\(([0-9]+[a-z]?)\))"));
+  // The paper's equations that the document derives.
+  for (const char* eq : {"1", "2a", "2b", "3a", "5a", "6", "8", "9", "10"})
+    EXPECT_TRUE(in_doc.count(eq)) << "the document does not number equation (" << eq << ")";
+  for (const auto& eq : in_doc) {
+    if (!derivation_only.count(eq)) {
+      EXPECT_TRUE(in_code.count(eq)) << "no code is tagged Eq. (" << eq << ")";
+    }
+  }
+  for (const auto& eq : in_code) EXPECT_TRUE(in_doc.count(eq)) << "code is tagged Eq. (" << eq << ") but the document does not number it";
+  for (const auto& eq : derivation_only) EXPECT_FALSE(in_code.count(eq)) << "(" << eq << ") is listed as derivation-only but is tagged in code";
+}
+
+TEST(Paper, EveryIncludedResultIsMadeByTheMakefile) {
+  const std::string doc = slurp(kRoot / "paper/paper.md"), make = slurp(kRoot / "Makefile");
+  for (const auto& path : matches(doc, std::regex(R"re(include="(results/[^"]+)")re"))) {
+    EXPECT_NE(make.find(path), std::string::npos) << path << " is included but no Makefile rule names it";
+  }
+}
+
+TEST(Published, TheTableIsTheOneInThePaper) {
+  // Independent of the CSV: the first and last rows and the row count, read off the paper's text.
+  const auto t = plate::read_paper_table(kRoot / "reference/paper_table.csv");
+  ASSERT_EQ(t.size(), 8u);
+  EXPECT_DOUBLE_EQ(t.front().tolerance, 1.3e-4);
+  EXPECT_EQ(t.front().iterations, 45);
+  EXPECT_EQ(t.back().iterations_glt, 750);
+  for (size_t i = 1; i < t.size(); ++i) {
+    EXPECT_LT(t[i].tolerance, t[i - 1].tolerance);  // tighter tolerance,
+    EXPECT_GT(t[i].iterations, t[i - 1].iterations);  // more iterations
+  }
+  const auto n = plate::read_paper_numbers(kRoot / "reference/paper_numbers.csv");
+  EXPECT_DOUBLE_EQ(plate::published(n, "h") * plate::published(n, "h") * plate::published(n, "cells"), 1.0);
+  EXPECT_THROW(plate::published(n, "no such key"), std::runtime_error);
+}
