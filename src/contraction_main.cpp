@@ -11,7 +11,6 @@
 #include "atomic_file.hpp"
 #include "format.hpp"
 #include "contraction.hpp"
-#include "fields.hpp"
 #include "published.hpp"
 
 using namespace plate;
@@ -28,8 +27,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     const auto pub = read_paper_numbers(reference + "/paper_numbers.csv");
-    const Field paper_phi = cylinder(published(pub, "obstacle_cx"), published(pub, "obstacle_cy"),
-                                     published(pub, "obstacle_radius"), published(pub, "obstacle_height"));
+    const Field paper_phi = paper_obstacle(pub);
     std::ostringstream md;
     md << "<!-- Written by build/contraction (make results); do not edit. -->\n\n"
        << "| h | sampling | eps | lambda_1h | q = 1/(1 + eps lambda_1h) | measured, no contact | slowest, paper's obstacle"

@@ -13,7 +13,6 @@
 #include "contact.hpp"
 #include "crosscheck.hpp"
 #include "eps_limit.hpp"
-#include "fields.hpp"
 #include "published.hpp"
 
 using namespace plate;
@@ -33,8 +32,7 @@ int main(int argc, char** argv) {
 
   try {
     const auto pub = read_paper_numbers(reference + "/paper_numbers.csv");
-    const Field phi = cylinder(published(pub, "obstacle_cx"), published(pub, "obstacle_cy"),
-                               published(pub, "obstacle_radius"), published(pub, "obstacle_height"));
+    const Field phi = paper_obstacle(pub);
     const SamplingKind kind = sampling == "gauss" ? SamplingKind::Gauss : SamplingKind::Nodes;
     const Grid g = make_grid(n);
     const Problem p = make_problem(g, kind, phi, [](double, double) { return 0.0; });

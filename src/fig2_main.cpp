@@ -13,7 +13,6 @@
 #include "format.hpp"
 #include "contact.hpp"
 #include "eps_limit.hpp"
-#include "fields.hpp"
 #include "published.hpp"
 #include "schemes.hpp"
 
@@ -36,7 +35,7 @@ struct Point {
 // positively homogeneous in (R, w) at fixed eps, so every quantity below is exactly linear in R.
 Point measure(int n, SamplingKind kind, double R, double eps, double nu, const std::map<std::string, double>& pub) {
   const double r = published(pub, "obstacle_radius");
-  const Field phi = cylinder(published(pub, "obstacle_cx"), published(pub, "obstacle_cy"), r, R);
+  const Field phi = paper_obstacle(pub, R);
   const Problem p = make_problem(make_grid(n), kind, phi, [](double, double) { return 0.0; });
   const VectorXd w = penalised_path(p, eps).back();
   const NodalFields f = nodal_fields(p, w, phi, eps, nu);
@@ -101,7 +100,7 @@ int main(int argc, char** argv) {
 
   try {
     const auto pub = read_paper_numbers(reference + "/paper_numbers.csv");
-    const int n_paper = static_cast<int>(std::lround(1.0 / published(pub, "h")));
+    const int n_paper = paper_cells(pub);
     std::vector<Point> sweep, study;
     std::ostringstream fit;
     fit << "<!-- Written by build/fig2 (make results); do not edit. -->\n\n"

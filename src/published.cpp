@@ -2,6 +2,9 @@
 // the columns, fields are separated by commas and never quoted.
 #include "published.hpp"
 
+#include "fields.hpp"
+
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -70,6 +73,19 @@ double published(const std::map<std::string, double>& numbers, const std::string
   const auto it = numbers.find(key);
   if (it == numbers.end()) throw std::runtime_error("reference/paper_numbers.csv has no key " + key);
   return it->second;
+}
+
+Field paper_obstacle(const std::map<std::string, double>& numbers, double height) {
+  return cylinder(published(numbers, "obstacle_cx"), published(numbers, "obstacle_cy"),
+                  published(numbers, "obstacle_radius"), height);
+}
+
+Field paper_obstacle(const std::map<std::string, double>& numbers) {
+  return paper_obstacle(numbers, published(numbers, "obstacle_height"));
+}
+
+int paper_cells(const std::map<std::string, double>& numbers) {
+  return static_cast<int>(std::lround(1.0 / published(numbers, "h")));
 }
 
 }  // namespace plate

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "assemble.hpp"
+
 namespace plate {
 
 struct PublishedRow {
@@ -21,5 +23,13 @@ std::map<std::string, double> read_paper_numbers(const std::string& path);
 
 // One value of read_paper_numbers' map; throws std::runtime_error naming a missing key.
 double published(const std::map<std::string, double>& numbers, const std::string& key);
+
+// The paper's obstacle read from those numbers: `height` on its disk, no constraint outside it.
+Field paper_obstacle(const std::map<std::string, double>& numbers, double height);
+// The same with the published height.
+Field paper_obstacle(const std::map<std::string, double>& numbers);
+
+// The paper's grid, n = 1/h cells per side.
+int paper_cells(const std::map<std::string, double>& numbers);
 
 }  // namespace plate

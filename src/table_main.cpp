@@ -14,7 +14,6 @@
 #include "contact.hpp"
 #include "contraction.hpp"
 #include "eps_limit.hpp"
-#include "fields.hpp"
 #include "published.hpp"
 #include "schemes.hpp"
 
@@ -123,9 +122,8 @@ int main(int argc, char** argv) {
   try {
     const auto table = read_paper_table(reference + "/paper_table.csv");
     const auto numbers = read_paper_numbers(reference + "/paper_numbers.csv");
-    const int n_paper = static_cast<int>(std::lround(1.0 / published(numbers, "h")));
-    const Field phi = cylinder(published(numbers, "obstacle_cx"), published(numbers, "obstacle_cy"),
-                               published(numbers, "obstacle_radius"), published(numbers, "obstacle_height"));
+    const int n_paper = paper_cells(numbers);
+    const Field phi = paper_obstacle(numbers);
     const double load = published(numbers, "load");
     std::vector<int> grids = {n_paper};
     grids.insert(grids.end(), fine.begin(), fine.end());
