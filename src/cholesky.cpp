@@ -25,4 +25,10 @@ VectorXd Cholesky::solve(const VectorXd& b) const {
   return x;
 }
 
+Eigen::MatrixXd Cholesky::solve_many(const Eigen::MatrixXd& B) const {
+  Eigen::MatrixXd X = llt_.solve(B);
+  if (llt_.info() != Eigen::Success) throw std::runtime_error("CHOLMOD: solve failed");
+  return X;
+}
+
 }  // namespace plate

@@ -14,6 +14,7 @@ class Cholesky {
   // Numeric factorisation; A must have the analysed pattern. Throws if A is not positive definite.
   void factorize(const SpMat& A);
   VectorXd solve(const VectorXd& b) const;
+  Eigen::MatrixXd solve_many(const Eigen::MatrixXd& B) const;  // several right-hand sides at once
   int factorizations() const { return factorizations_; }
 
  private:

@@ -1,0 +1,259 @@
+// Primal-dual active sets for the exactly constrained problem, its monotone fallback, its
+// certificate, and the sequence of grids that gives it a good start.
+#include "active_set.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <unordered_set>
+
+#include "contact.hpp"
+
+namespace plate {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+double nodal_max(const VectorXd& w) {
+  double m = 0;
+  for (Eigen::Index p = 0; p < w.size() / 4; ++p) m = std::max(m, std::abs(w[4 * p]));
+  return m;
+}
+
+// lambda_p = (K w - F)_{value of p} / W_p on held nodes: the force the obstacle must supply there.
+VectorXd multipliers(const Problem& p, const VectorXd& w, const NodeSet& held) {
+  const VectorXd r = p.K * w - p.F;
+  VectorXd lambda = VectorXd::Zero(p.phi.size());
+  for (int q = 0; q < lambda.size(); ++q)
+    if (held[q]) lambda[q] = r[4 * q] / p.sampling.weights[q];
+  return lambda;
+}
+
+// A 64-bit fingerprint of a node set, to notice a repeated active set without storing it.
+size_t fingerprint(const NodeSet& s) {
+  size_t h = 1469598103934665603ull;
+  for (size_t q = 0; q < s.size(); ++q)
+    if (s[q]) h = (h ^ q) * 1099511628211ull;
+  return h;
+}
+
+int count(const NodeSet& s) {
+  int c = 0;
+  for (char v : s) c += v != 0;
+  return c;
+}
+}  // namespace
+
+double Certificate::worst() const {
+  return std::max(std::max(violation, negative_multiplier), std::max(complementarity, stationarity));
+}
+
+Certificate certify(const Problem& p, const VectorXd& w, const VectorXd& lambda) {
+  Certificate c;
+  const double wmax = std::max(nodal_max(w), 1e-300), lmax = std::max(lambda.cwiseAbs().maxCoeff(), 1e-300);
+  for (int q = 0; q < p.phi.size(); ++q) {
+    const double gap = w[4 * q] - p.phi[q];  // +inf where there is no obstacle
+    c.violation = std::max(c.violation, -gap / wmax);
+    c.negative_multiplier = std::max(c.negative_multiplier, -lambda[q] / lmax);
+    if (lambda[q] != 0) c.complementarity = std::max(c.complementarity, std::abs(lambda[q] * gap) / (lmax * wmax));
+  }
+  // Componentwise backward error (Oettli-Prager): the smallest relative change of K, F and the
+  // contact forces that makes w exact. A normwise residual would demand the impossible of a matrix
+  // whose condition number grows like h^-4.
+  const VectorXd force = p.sampling.S.transpose() * p.sampling.weights.cwiseProduct(lambda);
+  VectorXd r = -p.F - force, scale = p.F.cwiseAbs() + force.cwiseAbs();
+  for (Eigen::Index col = 0; col < p.K.outerSize(); ++col)
+    for (SpMat::InnerIterator it(p.K, col); it; ++it) {
+      r[it.row()] += it.value() * w[col];
+      scale[it.row()] += std::abs(it.value() * w[col]);
+    }
+  for (Eigen::Index i = 0; i < r.size(); ++i)
+    if (scale[i] > 0) c.stationarity = std::max(c.stationarity, std::abs(r[i]) / scale[i]);
+  return c;
+}
+
+double energy(const Problem& p, const VectorXd& w) { return 0.5 * w.dot(p.K * w) - p.F.dot(w); }
+
+void validate(const ExactOptions& o) {
+  auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw std::invalid_argument(what);
+  };
+  require(std::isfinite(o.tol) && o.tol > 0, "tol must be finite and > 0");
+  require(o.tol >= 1e-14, "tol must be >= 1e-14: the certificate is computed in double precision");
+  require(o.max_iter >= 1, "max-iter must be >= 1");
+  require(o.coarsest >= 2, "coarsest must be >= 2");
+  require(o.max_correction >= 0, "max-correction must be >= 0");
+}
+
+namespace {
+
+struct Step {
+  VectorXd w, lambda;
+};
+
+// The monotone fallback: a primal active-set method from a feasible point. The working set W holds
+// every node where w touches phi, so after a node with lambda < 0 is released the step to the next
+// blocking node is positive and the energy falls strictly; no W can come back, the method ends.
+bool primal_active_set(const Problem& p, FixedSetSolver& fs, NodeSet& W, Step& s, const ExactOptions& o,
+                       int& steps, ExactResult& res) {
+  const int nodes = static_cast<int>(p.phi.size());
+  // A feasible start: hold every violated node until none is (W only grows).
+  for (;;) {
+    s.w = fs.solve(W);
+    ++steps;
+    bool feasible = true;
+    for (int q = 0; q < nodes; ++q)
+      if (!W[q] && s.w[4 * q] <= p.phi[q]) {
+        if (s.w[4 * q] < p.phi[q]) feasible = false;
+        W[q] = 1;
+        s.w[4 * q] = p.phi[q];
+      }
+    if (feasible) break;
+    if (steps >= o.max_iter) return false;
+  }
+  while (steps < o.max_iter) {
+    // s.w minimises the energy on W and is feasible.
+    s.lambda = multipliers(p, s.w, W);
+    res.fallback_energies.push_back(energy(p, s.w));
+    const double lmax = std::max(s.lambda.cwiseAbs().maxCoeff(), 1e-300);
+    int j = -1;
+    for (int q = 0; q < nodes; ++q)
+      if (W[q] && s.lambda[q] < -o.tol * lmax && (j < 0 || s.lambda[q] < s.lambda[j])) j = q;
+    if (j < 0) return true;
+    W[j] = 0;
+    // Move towards the minimiser on the smaller set until a free node would cross phi.
+    for (;;) {
+      const VectorXd target = fs.solve(W);
+      ++steps;
+      const VectorXd d = target - s.w;
+      double alpha = 1.0;
+      for (int q = 0; q < nodes; ++q)
+        if (!W[q] && d[4 * q] < 0) alpha = std::min(alpha, (p.phi[q] - s.w[4 * q]) / d[4 * q]);
+      s.w += alpha * d;
+      if (alpha >= 1.0) {
+        s.w = target;
+        break;
+      }
+      for (int q = 0; q < nodes; ++q)
+        if (!W[q] && s.w[4 * q] <= p.phi[q]) {
+          W[q] = 1;
+          s.w[4 * q] = p.phi[q];
+        }
+      if (steps >= o.max_iter) return false;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+ExactResult solve_exact(const Problem& p, const ExactOptions& o, NodeSet initial) {
+  validate(o);
+  if (p.sampling.kind != SamplingKind::Nodes)
+    throw std::invalid_argument(
+        "the exact-constraint solver needs --sampling nodes: at Gauss points the active constraints "
+        "outnumber the unknowns they touch, so their multipliers are not unique (use a penalty scheme)");
+  const auto t0 = Clock::now();
+  const int nodes = static_cast<int>(p.phi.size());
+  ExactResult res;
+  ExactLevel level;
+  level.cells = p.grid.nx;
+  NodeSet A = initial.empty() ? NodeSet(nodes, 0) : std::move(initial);
+  if (static_cast<int>(A.size()) != nodes) throw std::invalid_argument("initial active set has the wrong size");
+  for (int q = 0; q < nodes; ++q)
+    if (A[q] && !std::isfinite(p.phi[q])) A[q] = 0;  // no obstacle there: nothing to hold
+  level.predicted = count(A);
+  FixedSetSolver fs(p.K, p.F, p.phi, o.max_correction);
+  std::unordered_set<size_t> seen{fingerprint(A)};
+  Step s;
+  bool done = false;
+// @region primal-dual-active-set
+  // (D9)-(D10): solve with A held, read lambda on A, then keep the nodes that push (lambda > 0)
+  // and add the free nodes that went below phi. Stop when the set repeats itself.
+  while (level.pdas_iterations < o.max_iter) {
+    s.w = fs.solve(A);
+    ++level.pdas_iterations;
+    s.lambda = multipliers(p, s.w, A);
+    const double wmax = std::max(nodal_max(s.w), 1e-300), lmax = std::max(s.lambda.cwiseAbs().maxCoeff(), 1e-300);
+    NodeSet next(nodes, 0);
+    for (int q = 0; q < nodes; ++q)
+      next[q] = A[q] ? s.lambda[q] > -o.tol * lmax : p.phi[q] - s.w[4 * q] > o.tol * wmax;
+    if (next == A) {
+      done = true;
+      break;
+    }
+    if (!seen.insert(fingerprint(next)).second) {
+      res.cycled = true;
+      break;
+    }
+    A.swap(next);
+  }
+// @end primal-dual-active-set
+  if (!done && o.globalise) {
+    done = primal_active_set(p, fs, A, s, o, level.primal_steps, res);
+  }
+  res.w = std::move(s.w);
+  res.lambda = std::move(s.lambda);
+  res.active = std::move(A);
+  res.certificate = certify(p, res.w, res.lambda);
+  std::ostringstream m;
+  if (!done) {
+    if (res.cycled && !o.globalise)
+      m << "the primal-dual active-set iteration cycled (an active set came back after " << level.pdas_iterations
+        << " iterations) and globalisation is off";
+    else
+      m << "the active-set iterations did not finish in max-iter = " << o.max_iter << " steps";
+  } else if (res.certificate.worst() > o.tol) {
+    m << "the active set settled but the certificate fails: worst relative residual " << res.certificate.worst()
+      << " > tol = " << o.tol << " (violation " << res.certificate.violation << ", negative multiplier "
+      << res.certificate.negative_multiplier << ", complementarity " << res.certificate.complementarity
+      << ", stationarity " << res.certificate.stationarity << ")";
+  }
+  res.message = m.str();
+  res.converged = res.message.empty();
+  level.active = count(res.active);
+  level.factorizations = fs.factorizations();
+  level.correction_columns = fs.correction_columns();
+  level.seconds = seconds_since(t0);
+  res.levels.push_back(level);
+  return res;
+}
+
+namespace {
+// A fine node starts held if the coarse solution, interpolated by its own Hermite cubics, lies on
+// or below phi there: a coarse contact line predicts the fine one to within a cell.
+NodeSet predict_active(const Grid& coarse, const VectorXd& wc, const Problem& fine) {
+  NodeSet A(fine.phi.size(), 0);
+  for (int q = 0; q < fine.phi.size(); ++q) {
+    if (!std::isfinite(fine.phi[q])) continue;
+    const double w = evaluate(coarse, wc, fine.sampling.x[q], fine.sampling.y[q]).w;
+    A[q] = w <= fine.phi[q];
+  }
+  return A;
+}
+}  // namespace
+
+ExactResult solve_exact(const Grid& g, const Field& obstacle, const Field& load, const ExactOptions& o) {
+  validate(o);
+  std::vector<ExactLevel> coarse_levels;
+  Grid coarse;
+  VectorXd wc;
+  if (o.nested && g.nx % 2 == 0 && g.ny % 2 == 0 && g.nx / 2 >= o.coarsest) {
+    coarse = make_grid(g.nx / 2, g.lx(), g.ly());
+    ExactResult rc = solve_exact(coarse, obstacle, load, o);
+    coarse_levels = rc.levels;
+    wc = std::move(rc.w);  // even an uncertified coarse answer predicts the contact set well
+  }
+  const auto t0 = Clock::now();
+  const Problem p = make_problem(g, SamplingKind::Nodes, obstacle, load);
+  NodeSet initial = wc.size() ? predict_active(coarse, wc, p) : NodeSet{};
+  const double seconds_setup = seconds_since(t0);
+  ExactResult r = solve_exact(p, o, std::move(initial));
+  r.levels.back().seconds += seconds_setup;
+  r.levels.insert(r.levels.begin(), coarse_levels.begin(), coarse_levels.end());
+  return r;
+}
+
+}  // namespace plate
