@@ -235,8 +235,9 @@ NodeSet predict_active(const Grid& coarse, const VectorXd& wc, const Problem& fi
 }
 }  // namespace
 
-ExactResult solve_exact(const Grid& g, const Field& obstacle, const Field& load, const ExactOptions& o) {
+ExactResult solve_exact(const Problem& p, const Field& obstacle, const Field& load, const ExactOptions& o) {
   validate(o);
+  const Grid& g = p.grid;
   std::vector<ExactLevel> coarse_levels;
   Grid coarse;
   VectorXd wc;
@@ -247,12 +248,20 @@ ExactResult solve_exact(const Grid& g, const Field& obstacle, const Field& load,
     wc = std::move(rc.w);  // even an uncertified coarse answer predicts the contact set well
   }
   const auto t0 = Clock::now();
-  const Problem p = make_problem(g, SamplingKind::Nodes, obstacle, load);
   NodeSet initial = wc.size() ? predict_active(coarse, wc, p) : NodeSet{};
-  const double seconds_setup = seconds_since(t0);
+  const double seconds_predict = seconds_since(t0);
   ExactResult r = solve_exact(p, o, std::move(initial));
-  r.levels.back().seconds += seconds_setup;
+  r.levels.back().seconds += seconds_predict;
   r.levels.insert(r.levels.begin(), coarse_levels.begin(), coarse_levels.end());
+  return r;
+}
+
+ExactResult solve_exact(const Grid& g, const Field& obstacle, const Field& load, const ExactOptions& o) {
+  const auto t0 = Clock::now();
+  const Problem p = make_problem(g, SamplingKind::Nodes, obstacle, load);
+  const double seconds_assemble = seconds_since(t0);
+  ExactResult r = solve_exact(p, obstacle, load, o);
+  r.levels.back().seconds += seconds_assemble;
   return r;
 }
 

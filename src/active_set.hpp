@@ -60,6 +60,8 @@ ExactResult solve_exact(const Problem& p, const ExactOptions& o, NodeSet initial
 // Grid sequencing: solve on the grid with nx / 2 cells first (while nx is even and above
 // o.coarsest) and start from the active set its solution predicts.
 ExactResult solve_exact(const Grid& g, const Field& obstacle, const Field& load, const ExactOptions& o);
+// The same on a problem already assembled (from the same obstacle and load, nodal sampling).
+ExactResult solve_exact(const Problem& p, const Field& obstacle, const Field& load, const ExactOptions& o);
 
 // 1/2 w^T K w - F^T w.
 double energy(const Problem& p, const VectorXd& w);

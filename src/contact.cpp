@@ -57,8 +57,13 @@ double penalty_residual(const Problem& p, const VectorXd& w, double eps) {
 // @end penalty-residual
 
 NodalFields nodal_fields(const Problem& p, const VectorXd& w, const Field& obstacle, double eps, double nu) {
+  return nodal_fields(p, w, obstacle, contact_force_density(p, w, eps), nu);
+}
+
+NodalFields nodal_fields(const Problem& p, const VectorXd& w, const Field& obstacle, const VectorXd& xi_samples,
+                         double nu) {
   const Grid& g = p.grid;
-  const VectorXd force = p.sampling.S.transpose() * p.sampling.weights.cwiseProduct(contact_force_density(p, w, eps));
+  const VectorXd force = p.sampling.S.transpose() * p.sampling.weights.cwiseProduct(xi_samples);
   NodalFields f;
   for (int j = 0; j <= g.ny; ++j)
     for (int i = 0; i <= g.nx; ++i) {

@@ -43,5 +43,8 @@ struct NodalFields {
   int size() const { return static_cast<int>(x.size()); }
 };
 NodalFields nodal_fields(const Problem& p, const VectorXd& w, const Field& obstacle, double eps, double nu);
+// The same with the force density at the sample points given (the exact solver's multipliers).
+NodalFields nodal_fields(const Problem& p, const VectorXd& w, const Field& obstacle, const VectorXd& xi_samples,
+                         double nu);
 
 }  // namespace plate

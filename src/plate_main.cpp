@@ -11,6 +11,7 @@
 #include "atomic_file.hpp"
 #include "contraction.hpp"
 #include "fields.hpp"
+#include "format.hpp"
 #include "summary.hpp"
 
 namespace {
@@ -62,6 +63,7 @@ int main(int argc, char** argv) {
       "w = dw/dn = 0 on the boundary, by the penalty problem (2): Lap^2 w + eps^-1 min(w - phi, 0) = f,\n"
       "solved by the linear scheme (5a) or the nonlinear scheme (3a) with Bogner-Fox-Schmit elements (8),\n"
       "eps_s = eps-start * 10^-s until successive eps levels agree within tol. Starting guess w = 0.\n"
+      "--scheme exact imposes w >= phi at the nodes with no eps (primal-dual active sets) and certifies the answer.\n"
       "Exit status: 0 converged, 2 bad input, 3 not converged (outputs are still written), 4 other failure."};
   app.get_formatter()->column_width(34);
 
@@ -91,24 +93,28 @@ int main(int argc, char** argv) {
   app.add_option("--radius", radius, "radius of the cylinder")->check(kFinitePositive)->capture_default_str();
   app.add_option("--centre", centre, "centre of the cylinder, 'x,y'")->capture_default_str();
   app.add_option("--load", load, "load f(x, y): a number or an expression in x, y")->capture_default_str();
-  app.add_option("--scheme", scheme, "linear: scheme (5a), one factorisation per eps; nonlinear: scheme (3a)")
-      ->check(CLI::IsMember({"linear", "nonlinear"}))
-      ->capture_default_str();
-  app.add_option("--sampling", sampling,
+  app.add_option("--scheme", scheme,
+                     "linear: scheme (5a), one factorisation per eps; nonlinear: scheme (3a); exact: no penalty, "
+                     "primal-dual active sets at the nodes (needs --sampling nodes, its default)")
+          ->check(CLI::IsMember({"linear", "nonlinear", "exact"}))
+          ->capture_default_str();
+  auto* sampling_opt = app.add_option("--sampling", sampling,
                  "where w >= phi is imposed: gauss (4x4 Gauss points per element, (8) as printed) "
                  "or nodes (grid nodes, weight h^2)")
       ->check(CLI::IsMember({"gauss", "nodes"}))
       ->capture_default_str();
   auto* eps_opt = app.add_option("--eps", eps_fixed, "solve at this eps only (no continuation)")->check(kFinitePositive);
-  app.add_option("--eps-start", opt.eps_start, "first eps of the continuation")
+  auto* eps_start_opt = app.add_option("--eps-start", opt.eps_start, "first eps of the continuation")
       ->check(kFinitePositive)
       ->capture_default_str()
       ->excludes(eps_opt);
-  app.add_option("--eps-min", opt.eps_min, "smallest eps tried before the continuation is declared failed")
+  auto* eps_min_opt = app.add_option("--eps-min", opt.eps_min, "smallest eps tried before the continuation is declared failed")
       ->check(kFinitePositive)
       ->capture_default_str()
       ->excludes(eps_opt);
-  app.add_option("--tol", opt.tol, "OS: stop when steps, and successive eps levels, are within tol (max over nodes)")
+  auto* tol_opt = app.add_option("--tol", opt.tol,
+                 "OS: stop when steps, and successive eps levels, are within tol (max over nodes); "
+                 "with --scheme exact the bound on every relative certificate entry (default there 1e-10)")
       ->check(kFinitePositive)
       ->capture_default_str();
   app.add_option("--max-iter", opt.max_iter, "iteration cap per eps level; reaching it is a failure")
@@ -120,8 +126,12 @@ int main(int argc, char** argv) {
   app.add_option("--point", points, "report w at 'x,y' (repeatable)");
   app.add_option("--csv", csv_path, "write the nodal fields (CSV) here");
   app.add_option("--json", json_path, "write the summary (JSON) here");
-  auto* rate_flag = app.add_flag("--rate", rate, "also compute lambda_1h and the linear scheme's contraction factors");
-  auto* quiet_flag = app.add_flag("-q,--quiet", quiet, "print nothing but errors");
+  bool no_globalise = false, no_nested = false;
+  app.add_flag("--no-globalise", no_globalise,
+               "exact scheme: end with an error if the active set repeats, instead of the monotone fallback");
+  app.add_flag("--no-nested", no_nested, "exact scheme: start from an empty active set, not from the coarser grid");
+  app.add_flag("--rate", rate, "also compute lambda_1h and the linear scheme's contraction factors");
+  app.add_flag("-q,--quiet", quiet, "print nothing but errors");
   CLI11_PARSE(app, argc, argv);
 
   const auto t0 = std::chrono::steady_clock::now();
@@ -135,7 +145,25 @@ int main(int argc, char** argv) {
       phi = expression("--obstacle", obstacle);
     }
     const Field f = expression("--load", load);
+    const bool exact = scheme == "exact";
     opt.scheme = scheme == "linear" ? Scheme::Linear : Scheme::Nonlinear;
+    if (exact) {
+      for (const auto* o : {eps_opt, eps_start_opt, eps_min_opt})
+        if (o->count()) throw std::invalid_argument(o->get_name() + " has no meaning for --scheme exact (there is no eps)");
+      if (rate) throw std::invalid_argument("--rate describes the linear scheme's contraction: it needs a penalty scheme");
+      if (!sampling_opt->count()) sampling = "nodes";
+      if (sampling != "nodes")
+        throw std::invalid_argument("--scheme exact needs --sampling nodes: at Gauss points the active constraints "
+                                    "outnumber the unknowns they touch (use --scheme nonlinear)");
+    } else if (no_globalise || no_nested) {
+      throw std::invalid_argument("--no-globalise and --no-nested apply to --scheme exact only");
+    }
+    ExactOptions exact_opt;
+    exact_opt.tol = tol_opt->count() ? opt.tol : exact_opt.tol;
+    exact_opt.max_iter = app.get_option("--max-iter")->count() ? opt.max_iter : exact_opt.max_iter;
+    exact_opt.globalise = !no_globalise;
+    exact_opt.nested = !no_nested;
+    if (exact) validate(exact_opt);
     if (*eps_opt) {
       opt.eps_start = eps_fixed;
       opt.continuation = false;
@@ -152,7 +180,10 @@ int main(int argc, char** argv) {
       if (o->get_name() == "--help") continue;
       std::string value = o->count() ? CLI::detail::join(o->reduced_results(), " ") : o->get_default_str();
       if (value.empty()) value = "(none)";
-      if (o == rate_flag || o == quiet_flag) value = o->count() ? "true" : "false";
+      if (o->get_expected_max() == 0) value = o->count() ? "true" : "false";  // a flag
+      if (o == sampling_opt) value = sampling;                              // exact changes its default
+      if (exact && o == tol_opt) value = plate::fmt("%g", exact_opt.tol);
+      if (exact && o->get_name() == "--max-iter") value = std::to_string(exact_opt.max_iter);
       report.config.emplace_back(o->get_name(), value);
     }
 
@@ -165,8 +196,24 @@ int main(int argc, char** argv) {
     const Problem problem = make_problem(g, kind, phi, f);
     report.seconds_assemble = seconds_since(t0);
 
-    const SolveResult result = solve(problem, opt);
-    const NodalFields nodes = nodal_fields(problem, result.w, phi, result.eps, nu);
+    SolveResult result;
+    ExactResult exact_result;
+    VectorXd xi;
+    if (exact) {
+      exact_result = solve_exact(problem, phi, f, exact_opt);
+      result.w = exact_result.w;
+      result.converged = exact_result.converged;
+      result.message = exact_result.message;
+      for (const auto& l : exact_result.levels) result.seconds_iterate += l.seconds;
+      xi = exact_result.lambda;
+      report.certificate = &exact_result.certificate;
+      report.certificate_tol = exact_opt.tol;
+    } else {
+      result = solve(problem, opt);
+      xi = contact_force_density(problem, result.w, result.eps);
+    }
+    const NodalFields nodes = nodal_fields(problem, result.w, phi, xi, nu);
+    report.xi = xi;
     if (rate) report.lambda1h = smallest_eigenpair(problem.K, problem.M).lambda;
     report.problem = &problem;
     report.result = &result;

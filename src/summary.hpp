@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include "active_set.hpp"
 #include "contact.hpp"
 #include "schemes.hpp"
 
@@ -14,6 +15,9 @@ struct Report {
   const Problem* problem = nullptr;
   const SolveResult* result = nullptr;
   const NodalFields* nodes = nullptr;
+  VectorXd xi;                                    // contact force density at the sample points
+  const Certificate* certificate = nullptr;       // the exact solver's; null for the penalty schemes
+  double certificate_tol = 0;
   std::vector<std::pair<double, double>> points;  // where the user asked for w
   double lambda1h = -1;                           // < 0: not computed
   double seconds_assemble = 0, seconds_total = 0;

@@ -38,7 +38,7 @@ TEST(Cli, HelpExplainsEveryOption) {
   EXPECT_EQ(r.status, 0);
   for (const char* opt : {"--cells", "--lx", "--ly", "--obstacle", "--obstacle-height", "--radius", "--centre", "--load",
                           "--scheme", "--sampling", "--eps", "--eps-start", "--eps-min", "--tol", "--max-iter", "--nu",
-                          "--point", "--csv", "--json", "--rate"})
+                          "--point", "--csv", "--json", "--rate", "--no-globalise", "--no-nested"})
     EXPECT_NE(r.output.find(opt), std::string::npos) << opt;
 }
 
@@ -57,6 +57,19 @@ TEST(Cli, PaperCaseRunsAndWritesItsOutputs) {
   int lines = 0;
   for (std::string line; std::getline(c, line);) lines += (!line.empty() && line[0] != '#');
   EXPECT_EQ(lines, 1 + 5 * 5);  // header and the 25 nodes of the 4 x 4 grid
+}
+
+TEST(Cli, ExactSchemeWritesItsCertificate) {
+  const std::string json = temp_path("exact.json");
+  std::filesystem::remove(json);
+  const PlateRun r = run_plate("-n 16 --scheme exact --json " + json);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("--sampling = nodes"), std::string::npos) << r.output;  // its default, echoed
+  std::ifstream j(json);
+  std::stringstream js;
+  js << j.rdbuf();
+  for (const char* key : {"\"converged\": true", "\"certificate\": {\"violation\": 0", "\"residual_ok\": true"})
+    EXPECT_NE(js.str().find(key), std::string::npos) << key << "\n" << js.str();
 }
 
 struct BadInput {
@@ -92,7 +105,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"--obstacle '-1 + sqrt(x - 2)'", "obstacle"},
                       BadInput{"--point 2,0.5", "--point"}, BadInput{"--point a,b", "--point"},
                       BadInput{"--max-iter 0", "--max-iter"},
-                      BadInput{"--eps-min 1 --eps-start 0.1", "eps-min"}));
+                      BadInput{"--eps-min 1 --eps-start 0.1", "eps-min"},
+                      BadInput{"--scheme exact --sampling gauss", "--sampling nodes"},
+                      BadInput{"--scheme exact --eps 1e-3", "--eps"}, BadInput{"--scheme exact --tol 1e-20", "tol"},
+                      BadInput{"--scheme exact --rate", "--rate"}, BadInput{"--no-globalise", "--no-globalise"}));
 
 TEST(Cli, UnwritableOutputIsAnErrorNamingThePath) {
   const PlateRun r = run_plate("-q --json /nonexistent-dir/summary.json");
