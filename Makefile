@@ -2,7 +2,7 @@
 # `make all` and `make test` install what is missing (make deps) and build first.
 BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
-DRIVERS := $(BUILD)/table $(BUILD)/fig1 $(BUILD)/fig2 $(BUILD)/contraction
+DRIVERS := $(BUILD)/table $(BUILD)/fig1 $(BUILD)/fig2 $(BUILD)/contraction $(BUILD)/bench $(BUILD)/micro_bench
 BINS  := $(BUILD)/plate $(BUILD)/crosscheck $(BUILD)/plate_tests $(DRIVERS)
 PAPER_NUMBERS := reference/paper_numbers.csv
 
@@ -11,12 +11,14 @@ FIG1_DATA := results/fig1_points.csv results/fig1_surface.dat results/fig1_conta
 FIG2_DATA := results/fig2.csv results/fig2_mesh.csv results/fig2_fit.md results/fig2_mesh.md
 FIGURES   := results/fig1.svg results/fig1.png results/fig2.svg results/fig2.png
 RESULTS   := $(TABLES) results/contraction.md $(FIG1_DATA) $(FIG2_DATA) $(FIGURES)
+BENCH     := results/speed_vs_error.csv results/speed_vs_error.md
+BENCH_ALL := $(BENCH) results/speed_vs_error.svg results/speed_vs_error.png results/micro_benchmarks.md
 PAPER_INPUTS := paper/paper.md paper/style.css $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp) \
-                $(RESULTS) results/crosscheck.md
+                $(RESULTS) results/crosscheck.md $(BENCH) results/speed_vs_error.svg results/micro_benchmarks.md
 
-.PHONY: all test deps build results paper crosscheck clean help FORCE
+.PHONY: all test deps build results paper crosscheck bench clean help FORCE
 
-all: build results crosscheck paper ## build, then every result, figure and the document (about 10 min from scratch)
+all: build results crosscheck bench paper ## build, then every result, figure, benchmark and the document (about 15 min from scratch)
 
 help: ## list the targets
 	@grep -E '^[a-z]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 12
@@ -65,6 +67,17 @@ results/%.svg: paper/figures/%.gp | deps
 	gnuplot -e "fmt='svg'; out='$@.tmp'" $< && mv $@.tmp $@
 results/%.png: paper/figures/%.gp | deps
 	gnuplot -e "fmt='png'; out='$@.tmp'" $< && mv $@.tmp $@
+
+bench: $(BENCH_ALL) ## speed against error up to n = 512 (a million unknowns), and micro-benchmarks (several minutes)
+
+# Timings differ on every run: these files are remade only when the programs change.
+$(BENCH) &: $(BUILD)/bench $(PAPER_NUMBERS)
+	$(BUILD)/bench --out results
+
+results/micro_benchmarks.md: $(BUILD)/micro_bench
+	{ echo '```'; $(BUILD)/micro_bench --benchmark_color=false 2>&1; echo '```'; } > $@.tmp && mv $@.tmp $@
+
+results/speed_vs_error.svg results/speed_vs_error.png: $(BENCH)
 
 paper: results/paper.html ## the literate document: results/paper.html (self-contained, opens offline)
 

@@ -50,6 +50,7 @@ double Certificate::worst() const {
   return std::max(std::max(violation, negative_multiplier), std::max(complementarity, stationarity));
 }
 
+// @region certificate
 Certificate certify(const Problem& p, const VectorXd& w, const VectorXd& lambda) {
   Certificate c;
   const double wmax = std::max(nodal_max(w), 1e-300), lmax = std::max(lambda.cwiseAbs().maxCoeff(), 1e-300);
@@ -73,6 +74,7 @@ Certificate certify(const Problem& p, const VectorXd& w, const VectorXd& lambda)
     if (scale[i] > 0) c.stationarity = std::max(c.stationarity, std::abs(r[i]) / scale[i]);
   return c;
 }
+// @end certificate
 
 double energy(const Problem& p, const VectorXd& w) { return 0.5 * w.dot(p.K * w) - p.F.dot(w); }
 
@@ -93,6 +95,7 @@ struct Step {
   VectorXd w, lambda;
 };
 
+// @region monotone-fallback
 // The monotone fallback: a primal active-set method from a feasible point. The working set W holds
 // every node where w touches phi, so after a node with lambda < 0 is released the step to the next
 // blocking node is positive and the energy falls strictly; no W can come back, the method ends.
@@ -146,6 +149,7 @@ bool primal_active_set(const Problem& p, FixedSetSolver& fs, NodeSet& W, Step& s
   }
   return false;
 }
+// @end monotone-fallback
 
 }  // namespace
 
@@ -153,8 +157,9 @@ ExactResult solve_exact(const Problem& p, const ExactOptions& o, NodeSet initial
   validate(o);
   if (p.sampling.kind != SamplingKind::Nodes)
     throw std::invalid_argument(
-        "the exact-constraint solver needs --sampling nodes: at Gauss points the active constraints "
-        "outnumber the unknowns they touch, so their multipliers are not unique (use a penalty scheme)");
+        "the exact-constraint solver needs --sampling nodes: at Gauss points the constraints are general rows "
+        "of S, and where the contact is an area the active rows outnumber the unknowns they touch, which leaves "
+        "the multipliers undetermined (use a penalty scheme)");
   const auto t0 = Clock::now();
   const int nodes = static_cast<int>(p.phi.size());
   ExactResult res;
@@ -222,6 +227,7 @@ ExactResult solve_exact(const Problem& p, const ExactOptions& o, NodeSet initial
 }
 
 namespace {
+// @region grid-sequencing
 // A fine node starts held if the coarse solution, interpolated by its own Hermite cubics, lies on
 // or below phi there: a coarse contact line predicts the fine one to within a cell.
 NodeSet predict_active(const Grid& coarse, const VectorXd& wc, const Problem& fine) {
@@ -233,6 +239,7 @@ NodeSet predict_active(const Grid& coarse, const VectorXd& wc, const Problem& fi
   }
   return A;
 }
+// @end grid-sequencing
 }  // namespace
 
 ExactResult solve_exact(const Problem& p, const Field& obstacle, const Field& load, const ExactOptions& o) {

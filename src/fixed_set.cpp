@@ -71,6 +71,7 @@ void FixedSetSolver::add_columns(const std::vector<int>& nodes) {
   }
 }
 
+// @region bordered-correction
 VectorXd FixedSetSolver::solve(const NodeSet& fixed) {
   std::vector<int> changed;
   if (!base_.empty())
@@ -110,5 +111,6 @@ VectorXd FixedSetSolver::solve(const NodeSet& fixed) {
     if (fixed[p]) w[4 * p] = phi_[p];
   return w;
 }
+// @end bordered-correction
 
 }  // namespace plate

@@ -153,8 +153,9 @@ int main(int argc, char** argv) {
       if (rate) throw std::invalid_argument("--rate describes the linear scheme's contraction: it needs a penalty scheme");
       if (!sampling_opt->count()) sampling = "nodes";
       if (sampling != "nodes")
-        throw std::invalid_argument("--scheme exact needs --sampling nodes: at Gauss points the active constraints "
-                                    "outnumber the unknowns they touch (use --scheme nonlinear)");
+        throw std::invalid_argument("--scheme exact needs --sampling nodes: at Gauss points the constraints are "
+                                    "general rows of S, and where the contact is an area the active rows outnumber "
+                                    "the unknowns they touch (use --scheme nonlinear)");
     } else if (no_globalise || no_nested) {
       throw std::invalid_argument("--no-globalise and --no-nested apply to --scheme exact only");
     }

@@ -1,0 +1,37 @@
+# Work-precision, from results/speed_vs_error.csv (written by build/bench, `make bench`).
+# Left: error in the centre deflection against the h -> 0 limit, versus solve time; labels give the
+# cells n per side, and the exact solver's line is the discretisation error alone. Right: each
+# obstacle solve's time as a multiple of one unconstrained factorisation and solve on its grid.
+# Usage: gnuplot -e "fmt='svg'; out='results/speed_vs_error.svg'" paper/figures/speed_vs_error.gp
+if (fmt eq 'svg') { set terminal svg size 1100,480 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 1100,480 font 'Helvetica,11' }
+set output out
+set datafile separator ','
+set grid
+data = 'results/speed_vs_error.csv'
+# Columns: 1 solver, 2 n, 4 tol, 9 seconds, 10 ratio, 14 error_limit.
+sel(s, t, col) = (strcol(1) eq s && (t eq '' || strcol(4) eq t)) ? column(col) : NaN
+set multiplot layout 1,2
+set logscale xy
+set format x '10^{%L}'
+set format y '10^{%L}'
+set xlabel 'solve time [s] (fine-grid assembly excluded)'
+set ylabel '|w_h(0.5,0.5) - w_{lim}|'
+set key bottom left box opaque font ',10'
+set title 'error against time'
+plot data using (sel('exact', '', 9)):(sel('exact', '', 14)) with linespoints pt 7 lw 2 lc 1 title 'exact constraint', \
+     data using (sel('exact', '', 9)):(sel('exact', '', 14)):2 with labels offset 0,1 font ',10' notitle, \
+     data using (sel('nonlinear', '1e-06', 9)):(sel('nonlinear', '1e-06', 14)) with linespoints pt 5 lc 2 title 'scheme (3a), tol 1e-6', \
+     data using (sel('nonlinear', '1e-08', 9)):(sel('nonlinear', '1e-08', 14)) with linespoints pt 4 lc 3 title 'scheme (3a), tol 1e-8', \
+     data using (sel('linear', '1e-06', 9)):(sel('linear', '1e-06', 14)) with linespoints pt 9 lc 4 title 'scheme (5a), tol 1e-6'
+set logscale x 2
+set format x '%g'
+set format y '%g'
+set xlabel 'cells per side n'
+set ylabel 'time / (one factorisation + solve)'
+set key top left box opaque font ',10'
+set title 'cost in factorisations'
+plot data using (sel('exact', '', 2)):(sel('exact', '', 10)) with linespoints pt 7 lw 2 lc 1 title 'exact constraint', \
+     data using (sel('nonlinear', '1e-06', 2)):(sel('nonlinear', '1e-06', 10)) with linespoints pt 5 lc 2 title 'scheme (3a), tol 1e-6', \
+     data using (sel('nonlinear', '1e-08', 2)):(sel('nonlinear', '1e-08', 10)) with linespoints pt 4 lc 3 title 'scheme (3a), tol 1e-8', \
+     data using (sel('linear', '1e-06', 2)):(sel('linear', '1e-06', 10)) with linespoints pt 9 lc 4 title 'scheme (5a), tol 1e-6'
+unset multiplot

@@ -1,0 +1,381 @@
+// bench: the work-precision study of `make bench`. On the paper's problem with nodal sampling, for
+// n = 8, 16, ..., it times one unconstrained factorisation and solve, the exact-constraint solver and
+// the penalty schemes (3a) and (5a); each run is a child process, so its peak memory is its own.
+// Writes results/speed_vs_error.{csv,md}. `bench --help` lists the options.
+#include <CLI/CLI.hpp>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "active_set.hpp"
+#include "atomic_file.hpp"
+#include "contact.hpp"
+#include "fields.hpp"
+#include "format.hpp"
+#include "published.hpp"
+#include "schemes.hpp"
+
+using namespace plate;
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+struct Job {
+  std::string solver;  // baseline, exact, nonlinear, linear
+  int n = 0;
+  double tol = 0;      // penalty schemes: OS
+};
+
+struct Outcome {
+  Job job;
+  std::map<std::string, double> v;  // what the child measured
+  std::vector<double> nodal;        // nodal values of w (interior nodes)
+  double peak_mib = 0;
+  bool ok = false;                  // the child ran to the end
+};
+
+// The child's work. Times exclude the assembly of the fine-grid problem, which every solver
+// shares and which is timed on its own.
+std::map<std::string, double> run_job(const Job& job, const Field& obstacle, std::vector<double>& nodal) {
+  const Field no_load = [](double, double) { return 0.0; };
+  std::map<std::string, double> v;
+  const auto t0 = Clock::now();
+  const Problem p = make_problem(make_grid(job.n), SamplingKind::Nodes, obstacle, no_load);
+  v["assemble_s"] = seconds_since(t0);
+  v["unknowns"] = p.grid.unknowns();
+  VectorXd w;
+  const auto t1 = Clock::now();
+  if (job.solver == "baseline") {
+    // One unconstrained solve: analysis, numeric factorisation and a solve, as a user would pay once.
+    Cholesky chol;
+    chol.analyze(p.K);
+    v["analyse_s"] = seconds_since(t1);
+    const auto t2 = Clock::now();
+    chol.factorize(p.K);
+    v["factorise_s"] = seconds_since(t2);
+    const auto t3 = Clock::now();
+    w = chol.solve(p.M * VectorXd::Ones(p.grid.unknowns()));  // a uniform load; the time does not depend on it
+    v["solve_s"] = seconds_since(t3);
+    v["converged"] = 1;
+  } else if (job.solver == "exact") {
+    const ExactResult r = solve_exact(p, obstacle, no_load, ExactOptions{});
+    w = r.w;
+    int its = 0, facts = 0;
+    long cols = 0;
+    for (const auto& l : r.levels) its += l.pdas_iterations + l.primal_steps, facts += l.factorizations, cols += l.correction_columns;
+    v["iterations"] = its;
+    v["factorizations"] = facts;
+    v["correction_solves"] = cols;
+    v["fine_iterations"] = r.levels.back().pdas_iterations + r.levels.back().primal_steps;
+    v["active"] = r.levels.back().active;
+    v["certificate"] = r.certificate.worst();
+    v["converged"] = r.converged;
+  } else {
+    SolveOptions o;
+    o.scheme = job.solver == "linear" ? Scheme::Linear : Scheme::Nonlinear;
+    o.tol = job.tol;
+    const SolveResult r = solve(p, o);
+    w = r.w;
+    int facts = 0;
+    for (const auto& l : r.levels) facts += l.factorizations;
+    v["iterations"] = r.total_iterations();
+    v["factorizations"] = facts;
+    v["eps"] = r.eps;
+    v["converged"] = r.converged;
+  }
+  v["seconds"] = seconds_since(t1);
+  v["w_centre"] = evaluate(p.grid, w, 0.5, 0.5).w;
+  for (Eigen::Index q = 0; q < w.size() / 4; ++q) nodal.push_back(w[4 * q]);
+  return v;
+}
+
+// Runs a job in a child process and collects its measurements and its peak resident memory.
+Outcome run_in_child(const Job& job, const Field& obstacle, const std::filesystem::path& scratch) {
+  Outcome out{job, {}, {}, 0, false};
+  const std::filesystem::path file = scratch / ("w_" + job.solver + "_" + std::to_string(job.n) + ".txt");
+  std::cout.flush();
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("bench: fork failed");
+  if (pid == 0) {
+    int status = 1;
+    try {
+      std::vector<double> nodal;
+      const auto v = run_job(job, obstacle, nodal);
+      std::ofstream f(file);
+      f.precision(17);
+      for (const auto& [k, x] : v) f << k << ' ' << x << '\n';
+      f << "nodal " << nodal.size() << '\n';
+      for (double x : nodal) f << x << '\n';
+      status = f ? 0 : 1;
+    } catch (const std::exception& e) {
+      std::cerr << "bench: " << job.solver << " n = " << job.n << ": " << e.what() << "\n";
+    }
+    _exit(status);
+  }
+  int status = 0;
+  struct rusage ru {};
+  wait4(pid, &status, 0, &ru);
+  out.peak_mib = ru.ru_maxrss / 1024.0;
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return out;
+  std::ifstream f(file);
+  std::string key;
+  while (f >> key) {
+    if (key == "nodal") {
+      size_t count;
+      f >> count;
+      out.nodal.resize(count);
+      for (double& x : out.nodal) f >> x;
+      break;
+    }
+    f >> out.v[key];
+  }
+  std::filesystem::remove(file);
+  out.ok = true;
+  return out;
+}
+
+double max_diff(const std::vector<double>& a, const std::vector<double>& b) {
+  double m = 0;
+  for (size_t i = 0; i < a.size(); ++i) m = std::max(m, std::abs(a[i] - b[i]));
+  return m;
+}
+
+// Least-squares slope of log(y) against log(x).
+double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double k = static_cast<double>(x.size());
+  for (size_t i = 0; i < x.size(); ++i) {
+    const double a = std::log(x[i]), b = std::log(y[i]);
+    sx += a, sy += b, sxx += a * a, sxy += a * b;
+  }
+  return (k * sxy - sx * sy) / (k * sxx - sx * sx);
+}
+// The h -> 0 limit of the centre deflection from the exact solver's three finest grids:
+// Richardson with the observed order when the differences shrink, else the finest value.
+struct Limit {
+  double w = NAN, order = NAN, uncertainty = NAN;
+  int from = 0;
+};
+Limit h_limit(const std::map<int, const Outcome*>& exact_at) {
+  Limit L;
+  if (exact_at.size() < 3) return L;
+  auto it = exact_at.rbegin();
+  const double w3 = it->second->v.at("w_centre");
+  L.from = it->first;
+  const double w2 = (++it)->second->v.at("w_centre"), w1 = (++it)->second->v.at("w_centre");
+  const double d12 = w2 - w1, d23 = w3 - w2;
+  if (d12 != 0 && d23 / d12 > 0 && d23 / d12 < 1) {
+    L.order = std::log2(d12 / d23);
+    L.w = w3 + d23 / (d12 / d23 - 1);
+    L.uncertainty = std::abs(L.w - w3);
+  } else {
+    L.w = w3;
+    L.uncertainty = std::abs(d23);
+  }
+  return L;
+}
+
+double baseline_seconds(const Outcome& b) { return b.v.at("analyse_s") + b.v.at("factorise_s") + b.v.at("solve_s"); }
+
+std::string csv(const std::vector<Outcome>& outcomes, const std::map<int, const Outcome*>& exact_at,
+                const std::map<int, const Outcome*>& baseline_at) {
+  const Limit L = h_limit(exact_at);
+  std::ostringstream o;
+  o << "# bench (make bench): the paper's problem (cylinder R = 0.0625, f = 0) with nodal sampling.\n"
+       "# solver: baseline = one unconstrained analysis + factorisation + solve of K; exact = primal-dual active\n"
+       "# sets with grid sequencing; nonlinear = scheme (3a), linear = scheme (5a), both with eps continuation and\n"
+       "# stopping tolerance tol. seconds: the solve, without assembling the fine-grid problem (assemble_s);\n"
+       "# ratio: seconds / baseline seconds on the same grid; peak_mib: the run's peak resident memory;\n"
+       "# error_discrete: max over nodes |w - w_exact| with w_exact the exact solver's answer on the same grid;\n"
+       "# error_limit: |w(0.5,0.5) - w_lim| with w_lim = " << fmt("%.9f", L.w) << " the h -> 0 estimate (see .md);\n"
+       "# certificate: worst relative entry of the exact solver's certificate. Timings vary from run to run.\n";
+  o << "solver,n,unknowns,tol,converged,iterations,factorizations,assemble_s,seconds,ratio,peak_mib,w_centre,"
+       "error_discrete,error_limit,certificate\n";
+  // Grouped by solver and tolerance, so that each forms one block (one line in the plot).
+  std::vector<const Outcome*> order;
+  for (const char* solver : {"baseline", "exact", "nonlinear", "linear"})
+    for (double tol : {0.0, 1e-6, 1e-8})
+      for (const Outcome& r : outcomes)
+        if (r.job.solver == solver && r.job.tol == tol) order.push_back(&r);
+  for (const Outcome* rp : order) {
+    const Outcome& r = *rp;
+    if (!r.ok) {
+      o << r.job.solver << ',' << r.job.n << ",,,failed,,,,,,,,,,\n";
+      continue;
+    }
+    const auto& v = r.v;
+    const bool base = r.job.solver == "baseline";
+    const double seconds = base ? baseline_seconds(r) : v.at("seconds");
+    const auto b = baseline_at.find(r.job.n);
+    const auto e = exact_at.find(r.job.n);
+    o << r.job.solver << ',' << r.job.n << ',' << v.at("unknowns") << ',' << (r.job.tol > 0 ? fmt("%g", r.job.tol) : "")
+      << ',' << (v.at("converged") != 0 ? "yes" : "no") << ',' << (base ? "" : fmt("%.0f", v.at("iterations"))) << ','
+      << (base ? "1" : fmt("%.0f", v.at("factorizations"))) << ',' << fmt("%.4g", v.at("assemble_s")) << ','
+      << fmt("%.4g", seconds) << ',' << (b != baseline_at.end() ? fmt("%.3f", seconds / baseline_seconds(*b->second)) : "")
+      << ',' << fmt("%.0f", r.peak_mib) << ',';
+    if (base) {
+      o << ",,,\n";
+      continue;
+    }
+    o << fmt("%.10f", v.at("w_centre")) << ','
+      << (e != exact_at.end() ? fmt("%.3e", max_diff(r.nodal, e->second->nodal)) : "") << ','
+      << fmt("%.3e", std::abs(v.at("w_centre") - L.w)) << ','
+      << (r.job.solver == "exact" ? fmt("%.2e", v.at("certificate")) : "") << '\n';
+  }
+  return o.str();
+}
+
+std::string met(bool b) { return b ? "**met**" : "**not met**"; }
+
+std::string report(const std::vector<Outcome>& outcomes, const std::map<int, const Outcome*>& exact_at,
+                   const std::map<int, const Outcome*>& baseline_at, int max_exact, int max_baseline) {
+  const Limit L = h_limit(exact_at);
+  std::ostringstream md;
+  md << "Generated by `build/bench` (`make bench`); timings and memory are this machine's and vary between runs.\n"
+        "All runs solve the paper's problem with nodal sampling; each runs in its own process.\n\n";
+  md << "| n | unknowns | baseline s (analyse + factorise + solve) | exact s | ratio | PDAS its (finest grid) | "
+        "factorisations (all grids) | correction solves (all grids) | peak MiB | certificate | w(0.5, 0.5) |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& [n, e] : exact_at) {
+    const auto b = baseline_at.find(n);
+    const auto& ev = e->v;
+    md << "| " << n << " | " << fmt("%.0f", ev.at("unknowns")) << " | ";
+    if (b != baseline_at.end()) {
+      const auto& bv = b->second->v;
+      md << fmt("%.3g", baseline_seconds(*b->second)) << " (" << fmt("%.2g", bv.at("analyse_s")) << " + "
+         << fmt("%.3g", bv.at("factorise_s")) << " + " << fmt("%.2g", bv.at("solve_s")) << ") | "
+         << fmt("%.3g", ev.at("seconds")) << " | " << fmt("%.2f", ev.at("seconds") / baseline_seconds(*b->second)) << " | ";
+    } else {
+      md << "not run | " << fmt("%.3g", ev.at("seconds")) << " | | ";
+    }
+    md
+       << fmt("%.0f", ev.at("fine_iterations")) << " | " << fmt("%.0f", ev.at("factorizations")) << " | "
+       << fmt("%.0f", ev.at("correction_solves")) << " | " << fmt("%.0f", e->peak_mib) << " | "
+       << fmt("%.1e", ev.at("certificate")) << " | " << fmt("%.7f", ev.at("w_centre")) << " |\n";
+  }
+  md << "\nPenalty schemes (same grids, nodal sampling; error against the exact discrete solution):\n\n"
+        "| scheme | tol | n | converged | iterations | factorisations | s | ratio to baseline | error (discrete) |\n"
+        "|---|---|---|---|---|---|---|---|---|\n";
+  for (const Outcome& r : outcomes) {
+    if (r.job.solver != "nonlinear" && r.job.solver != "linear") continue;
+    if (!r.ok) {
+      md << "| " << r.job.solver << " | " << fmt("%g", r.job.tol) << " | " << r.job.n << " | failed | | | | | |\n";
+      continue;
+    }
+    const auto b = baseline_at.find(r.job.n);
+    const auto e = exact_at.find(r.job.n);
+    md << "| " << (r.job.solver == "linear" ? "(5a) linear" : "(3a) nonlinear") << " | " << fmt("%g", r.job.tol) << " | "
+       << r.job.n << " | " << (r.v.at("converged") != 0 ? "yes" : "**no**") << " | " << fmt("%.0f", r.v.at("iterations"))
+       << " | " << fmt("%.0f", r.v.at("factorizations")) << " | " << fmt("%.3g", r.v.at("seconds")) << " | "
+       << (b != baseline_at.end() ? fmt("%.1f", r.v.at("seconds") / baseline_seconds(*b->second)) : "") << " | "
+       << (e != exact_at.end() ? fmt("%.1e", max_diff(r.nodal, e->second->nodal)) : "") << " |\n";
+  }
+  md << "\nThe h -> 0 limit of the centre deflection, from the exact solver on n = ";
+  {
+    auto it = exact_at.rbegin();
+    const int n3 = it->first, n2 = (++it)->first, n1 = (++it)->first;
+    md << n1 << ", " << n2 << ", " << n3;
+  }
+  md << ": w_lim = " << fmt("%.7f", L.w);
+  if (std::isfinite(L.order))
+    md << " (Richardson with the observed order " << fmt("%.2f", L.order) << "; it moves the finest value by "
+       << fmt("%.1e", L.uncertainty) << ", which we take as its uncertainty).\n";
+  else
+    md << " (the finest value: the differences do not shrink, so no order can be fitted; uncertainty "
+       << fmt("%.1e", L.uncertainty) << ").\n";
+  // Targets.
+  md << "\n**Targets** (issue 4), measured in this run:\n\n";
+  const auto e512 = exact_at.find(512), b512 = baseline_at.find(512);
+  if (e512 != exact_at.end() && b512 != baseline_at.end()) {
+    const double ratio = e512->second->v.at("seconds") / baseline_seconds(*b512->second);
+    const double cert = e512->second->v.at("certificate");
+    md << "- n = 512: exact solver " << fmt("%.3g", e512->second->v.at("seconds")) << " s against "
+       << fmt("%.3g", baseline_seconds(*b512->second)) << " s for one unconstrained factorisation and solve: ratio "
+       << fmt("%.2f", ratio) << " (target <= 3: " << met(ratio <= 3) << "; aim <= 2: " << met(ratio <= 2)
+       << "); certificate " << fmt("%.1e", cert) << " (<= 1e-10: " << met(cert <= 1e-10) << "); peak memory "
+       << fmt("%.0f", e512->second->peak_mib) << " MiB (< 4096 MiB: " << met(e512->second->peak_mib < 4096) << ").\n";
+  } else {
+    md << "- n = 512: not run (`--max-exact` = " << max_exact << ").\n";
+  }
+  const auto e1024 = exact_at.find(1024);
+  if (e1024 != exact_at.end())
+    md << "- n = 1024 (" << fmt("%.0f", e1024->second->v.at("unknowns")) << " unknowns): completed in "
+       << fmt("%.3g", e1024->second->v.at("seconds")) << " s with peak memory " << fmt("%.2f", e1024->second->peak_mib / 1024)
+       << " GiB (within 24 GiB: " << met(e1024->second->peak_mib < 24 * 1024) << ").\n";
+  else
+    md << "- n = 1024: not run (`--max-exact` = " << max_exact << ").\n";
+  std::vector<double> N, T;
+  for (const auto& [n, b] : baseline_at)
+    if (n >= 64) N.push_back(b->v.at("unknowns")), T.push_back(b->v.at("assemble_s"));
+  if (N.size() >= 2) {
+    const double slope = loglog_slope(N, T);
+    md << "- Assembly: time grows like N^" << fmt("%.2f", slope) << " over n = 64 ... " << max_baseline
+       << " (least-squares slope of log time against log unknowns; linear is 1; target: linear, "
+       << met(slope < 1.15) << " with slope < 1.15). Per unknown: ";
+    for (size_t i = 0; i < N.size(); ++i) md << (i ? ", " : "") << fmt("%.2g", T[i] / N[i] * 1e9) << " ns";
+    md << ".\n";
+  }
+  return md.str();
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"bench: work-precision study of the exact-constraint solver and the penalty schemes (make bench)"};
+  std::string out_dir = "results", paper_numbers = "reference/paper_numbers.csv";
+  int max_exact = 1024, max_baseline = 512, max_nonlinear = 128, max_linear = 64;
+  app.add_option("--out", out_dir, "folder for speed_vs_error.csv and .md")->capture_default_str();
+  app.add_option("--paper-numbers", paper_numbers, "published numbers (the obstacle)")->check(CLI::ExistingFile)->capture_default_str();
+  app.add_option("--max-exact", max_exact, "finest grid for the exact solver (a power of two >= 8)")
+      ->check(CLI::IsMember({8, 16, 32, 64, 128, 256, 512, 1024, 2048}))
+      ->capture_default_str();
+  app.add_option("--max-baseline", max_baseline, "finest grid for the unconstrained factorisation and solve")
+      ->check(CLI::Range(8, 2048))
+      ->capture_default_str();
+  app.add_option("--max-nonlinear", max_nonlinear, "finest grid for scheme (3a)")->check(CLI::Range(8, 2048))->capture_default_str();
+  app.add_option("--max-linear", max_linear, "finest grid for scheme (5a)")->check(CLI::Range(8, 2048))->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+  try {
+    const Field obstacle = paper_obstacle(read_paper_numbers(paper_numbers));
+    const std::filesystem::path scratch = std::filesystem::temp_directory_path() / ("plate_bench_" + std::to_string(getpid()));
+    std::filesystem::create_directories(scratch);
+    std::vector<Job> jobs;
+    for (int n = 8; n <= max_exact; n *= 2) {
+      if (n <= max_baseline) jobs.push_back({"baseline", n, 0});
+      jobs.push_back({"exact", n, 0});
+      for (double tol : {1e-6, 1e-8})
+        if (n <= max_nonlinear) jobs.push_back({"nonlinear", n, tol});
+      if (n <= max_linear) jobs.push_back({"linear", n, 1e-6});
+    }
+    std::vector<Outcome> outcomes;
+    std::map<int, const Outcome*> exact_at, baseline_at;
+    for (const Job& job : jobs) {
+      std::cout << "bench: " << job.solver << " n = " << job.n << (job.tol > 0 ? " tol = " + fmt("%g", job.tol) : "")
+                << " ..." << std::flush;
+      outcomes.push_back(run_in_child(job, obstacle, scratch));
+      const Outcome& o = outcomes.back();
+      std::cout << (o.ok ? fmt(" %.3g s", o.v.at("seconds")) + fmt(", peak %.0f MiB", o.peak_mib) : " FAILED") << "\n";
+    }
+    for (const Outcome& o : outcomes)
+      if (o.ok && o.job.solver == "exact") exact_at[o.job.n] = &o;
+      else if (o.ok && o.job.solver == "baseline") baseline_at[o.job.n] = &o;
+    std::filesystem::remove_all(scratch);
+    std::filesystem::create_directories(out_dir);
+    write_file_atomically(out_dir + "/speed_vs_error.csv", csv(outcomes, exact_at, baseline_at));
+    write_file_atomically(out_dir + "/speed_vs_error.md", report(outcomes, exact_at, baseline_at, max_exact, max_baseline));
+    std::cout << "bench: wrote " << out_dir << "/speed_vs_error.csv and .md\n";
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "bench: error: " << e.what() << "\n";
+    return 1;
+  }
+}
