@@ -2,25 +2,22 @@
 // certificate, and the sequence of grids that gives it a good start.
 #include "active_set.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_set>
 
 #include "contact.hpp"
+#include "schemes.hpp"
+#include "stopwatch.hpp"
 
 namespace plate {
 
 namespace {
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-double nodal_max(const VectorXd& w) {
-  double m = 0;
-  for (Eigen::Index p = 0; p < w.size() / 4; ++p) m = std::max(m, std::abs(w[4 * p]));
-  return m;
-}
+// The sizes the relative tolerances refer to; never zero, so a plate without contact divides safely.
+double value_scale(const VectorXd& w) { return std::max(max_nodal_abs(w), 1e-300); }
+double force_scale(const VectorXd& lambda) { return std::max(lambda.cwiseAbs().maxCoeff(), 1e-300); }
 
 // lambda_p = (K w - F)_{value of p} / W_p on held nodes: the force the obstacle must supply there.
 VectorXd multipliers(const Problem& p, const VectorXd& w, const NodeSet& held) {
@@ -53,7 +50,7 @@ double Certificate::worst() const {
 // @region certificate
 Certificate certify(const Problem& p, const VectorXd& w, const VectorXd& lambda) {
   Certificate c;
-  const double wmax = std::max(nodal_max(w), 1e-300), lmax = std::max(lambda.cwiseAbs().maxCoeff(), 1e-300);
+  const double wmax = value_scale(w), lmax = force_scale(lambda);
   for (int q = 0; q < p.phi.size(); ++q) {
     const double gap = w[4 * q] - p.phi[q];  // +inf where there is no obstacle
     c.violation = std::max(c.violation, -gap / wmax);
@@ -96,6 +93,18 @@ struct Step {
 };
 
 // @region monotone-fallback
+// Holds every free node at or below phi, at phi exactly. Returns whether any was strictly below.
+bool hold_touching(const Problem& p, NodeSet& W, VectorXd& w) {
+  bool violated = false;
+  for (int q = 0; q < p.phi.size(); ++q)
+    if (!W[q] && w[4 * q] <= p.phi[q]) {
+      violated = violated || w[4 * q] < p.phi[q];
+      W[q] = 1;
+      w[4 * q] = p.phi[q];
+    }
+  return violated;
+}
+
 // The monotone fallback: a primal active-set method from a feasible point. The working set W holds
 // every node where w touches phi, so after a node with lambda < 0 is released the step to the next
 // blocking node is positive and the energy falls strictly; no W can come back, the method ends.
@@ -106,21 +115,14 @@ bool primal_active_set(const Problem& p, FixedSetSolver& fs, NodeSet& W, Step& s
   for (;;) {
     s.w = fs.solve(W);
     ++steps;
-    bool feasible = true;
-    for (int q = 0; q < nodes; ++q)
-      if (!W[q] && s.w[4 * q] <= p.phi[q]) {
-        if (s.w[4 * q] < p.phi[q]) feasible = false;
-        W[q] = 1;
-        s.w[4 * q] = p.phi[q];
-      }
-    if (feasible) break;
+    if (!hold_touching(p, W, s.w)) break;
     if (steps >= o.max_iter) return false;
   }
   while (steps < o.max_iter) {
     // s.w minimises the energy on W and is feasible.
     s.lambda = multipliers(p, s.w, W);
     res.fallback_energies.push_back(energy(p, s.w));
-    const double lmax = std::max(s.lambda.cwiseAbs().maxCoeff(), 1e-300);
+    const double lmax = force_scale(s.lambda);
     int j = -1;
     for (int q = 0; q < nodes; ++q)
       if (W[q] && s.lambda[q] < -o.tol * lmax && (j < 0 || s.lambda[q] < s.lambda[j])) j = q;
@@ -139,11 +141,7 @@ bool primal_active_set(const Problem& p, FixedSetSolver& fs, NodeSet& W, Step& s
         s.w = target;
         break;
       }
-      for (int q = 0; q < nodes; ++q)
-        if (!W[q] && s.w[4 * q] <= p.phi[q]) {
-          W[q] = 1;
-          s.w[4 * q] = p.phi[q];
-        }
+      hold_touching(p, W, s.w);
       if (steps >= o.max_iter) return false;
     }
   }
@@ -181,7 +179,7 @@ ExactResult solve_exact(const Problem& p, const ExactOptions& o, NodeSet initial
     s.w = fs.solve(A);
     ++level.pdas_iterations;
     s.lambda = multipliers(p, s.w, A);
-    const double wmax = std::max(nodal_max(s.w), 1e-300), lmax = std::max(s.lambda.cwiseAbs().maxCoeff(), 1e-300);
+    const double wmax = value_scale(s.w), lmax = force_scale(s.lambda);
     NodeSet next(nodes, 0);
     for (int q = 0; q < nodes; ++q)
       next[q] = A[q] ? s.lambda[q] > -o.tol * lmax : p.phi[q] - s.w[4 * q] > o.tol * wmax;

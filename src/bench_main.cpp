@@ -7,7 +7,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -23,12 +22,11 @@
 #include "format.hpp"
 #include "published.hpp"
 #include "schemes.hpp"
+#include "stopwatch.hpp"
 
 using namespace plate;
 
 namespace {
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 struct Job {
   std::string solver;  // baseline, exact, nonlinear, linear

@@ -6,10 +6,11 @@
 #include "fixed_set.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <stdexcept>
 
 #include <Eigen/LU>
+
+#include "stopwatch.hpp"
 
 namespace plate {
 
@@ -28,7 +29,7 @@ FixedSetSolver::FixedSetSolver(const SpMat& K, const VectorXd& F, const VectorXd
 }
 
 void FixedSetSolver::factorize(const NodeSet& fixed) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = Clock::now();
   base_ = fixed;
   chol_.factorize(decoupled(K_, fixed));
   // Right-hand side of A0's system: the load, minus what the held values push into the free rows.
@@ -42,7 +43,7 @@ void FixedSetSolver::factorize(const NodeSet& fixed) {
     if (fixed[p]) b[4 * p] = K_.coeff(4 * p, 4 * p) * phi_[p];
   w0_ = chol_.solve(b);
   columns_.clear();
-  seconds_factorize_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  seconds_factorize_ += seconds_since(t0);
 }
 
 void FixedSetSolver::add_columns(const std::vector<int>& nodes) {

@@ -3,7 +3,6 @@
 // the cylinder of height R = 0.0625 and radius 0.25 at the centre, linear scheme (5a).
 #include <CLI/CLI.hpp>
 
-#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -12,6 +11,7 @@
 #include "contraction.hpp"
 #include "fields.hpp"
 #include "format.hpp"
+#include "stopwatch.hpp"
 #include "summary.hpp"
 
 namespace {
@@ -49,9 +49,6 @@ std::pair<double, double> parse_pair(const std::string& option, const std::strin
   return {x, y};
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 }  // namespace
 
@@ -134,7 +131,7 @@ int main(int argc, char** argv) {
   app.add_flag("-q,--quiet", quiet, "print nothing but errors");
   CLI11_PARSE(app, argc, argv);
 
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = plate::Clock::now();
   try {
     const Grid g = make_grid(n, lx, ly);
     Field phi;

@@ -4,10 +4,11 @@
 // because s - beta(s) = max(s, phi) pointwise.
 #include "schemes.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+
+#include "stopwatch.hpp"
 
 namespace plate {
 
@@ -26,8 +27,6 @@ double max_nodal_abs(const VectorXd& w) {
 }
 
 namespace {
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 void factorize_timed(Cholesky& chol, const SpMat& A, double* seconds) {
   const auto t0 = Clock::now();

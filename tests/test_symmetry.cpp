@@ -18,19 +18,6 @@ VectorXd penalised(const Problem& p, double eps = 1e-6) {
   EXPECT_TRUE(r.converged) << r.message;
   return r.w;
 }
-
-// Largest asymmetry of the nodal values over the eight symmetries of the n x n grid.
-double asymmetry(const Grid& g, const VectorXd& w) {
-  const int n = g.nx;
-  double worst = 0;
-  for (int j = 1; j < n; ++j)
-    for (int i = 1; i < n; ++i) {
-      const double v = w[g.dof(i, j, kW)];
-      for (auto [a, b] : {std::pair{j, i}, {n - i, j}, {i, n - j}, {n - i, n - j}, {n - j, i}, {j, n - i}, {n - j, n - i}})
-        worst = std::max(worst, std::abs(v - w[g.dof(a, b, kW)]));
-    }
-  return worst;
-}
 }  // namespace
 
 TEST(Invariance, DeflectionIsPositivelyHomogeneousInR) {
