@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
 
   int n = 4;
   double lx = 1.0, ly = 1.0;
-  std::string obstacle = "cylinder", load = "0", scheme = "linear", sampling = "gauss";
+  std::string obstacle = "cylinder", load = "0", scheme = "nonlinear", sampling = "gauss";
   double R = 0.0625, radius = 0.25, nu = 0.3;
   std::string centre = "0.5,0.5";
   SolveOptions opt;
@@ -91,7 +91,8 @@ int main(int argc, char** argv) {
   app.add_option("--centre", centre, "centre of the cylinder, 'x,y'")->capture_default_str();
   app.add_option("--load", load, "load f(x, y): a number or an expression in x, y")->capture_default_str();
   app.add_option("--scheme", scheme,
-                     "linear: scheme (5a), one factorisation per eps; nonlinear: scheme (3a); exact: no penalty, "
+                     "nonlinear: scheme (3a), refactorised when the contact set changes; linear: scheme (5a), one "
+                     "factorisation per eps, slow at small eps (its answers often fail the error bound); exact: no penalty, "
                      "primal-dual active sets at the nodes (needs --sampling nodes, its default)")
           ->check(CLI::IsMember({"linear", "nonlinear", "exact"}))
           ->capture_default_str();

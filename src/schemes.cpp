@@ -44,6 +44,21 @@ bool step_and_check(const Cholesky& chol, const VectorXd& rhs, VectorXd& w, doub
   if (o.on_iterate) o.on_iterate(eps, r.iterations, w);
   return r.last_step <= o.tol;
 }
+// Why a run whose steps met the stopping rules is still not an answer.
+std::string uncertified_message(const SolveResult& r, const SolveOptions& o) {
+  std::ostringstream m;
+  m << to_string(o.scheme) << " scheme: the stopping rules were met at eps = " << r.eps
+    << ", but the residual of (2a) only bounds the error by " << r.bound.bound << " > tol = " << o.tol << ": ";
+  if (r.bound.roundoff > 0.1 * o.tol)
+    m << "round-off alone allows " << r.bound.roundoff << " at this eps (eps^-1 magnifies the rounding of w - phi); "
+      << "use a larger --eps-min or --eps, or a larger --tol";
+  else
+    m << "the iteration stopped before it solved (2a)"
+      << (o.scheme == Scheme::Linear ? " (the linear scheme's steps shrink only by 1/(1 + eps lambda_1h) each, so a "
+                                       "small step is not a small error); use --scheme nonlinear or a smaller --tol"
+                                     : "; use a smaller --tol");
+  return m.str();
+}
 }  // namespace
 
 // @region linear-scheme
@@ -138,7 +153,7 @@ SolveResult solve(const Problem& p, const SolveOptions& o) {
       break;
     }
     if (!o.continuation || (r.level_change >= 0 && r.level_change <= o.tol)) {
-      res.converged = true;
+      res.stopped = true;
       break;
     }
     if (eps / 10.0 < o.eps_min * (1 - 1e-12)) {
@@ -151,6 +166,11 @@ SolveResult solve(const Problem& p, const SolveOptions& o) {
   }
 // @end continuation
   res.seconds_iterate = seconds_since(t_start) - res.seconds_factorize;
+  const auto t_bound = Clock::now();
+  res.bound = penalty_error_bound(p, res.w, res.eps, chol);
+  res.seconds_bound = seconds_since(t_bound);
+  res.converged = res.stopped && res.bound.bound <= o.tol;
+  if (res.stopped && !res.converged) res.message = uncertified_message(res, o);
   return res;
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cholesky.hpp"
+#include "penalty_bound.hpp"
 #include "problem.hpp"
 
 namespace plate {
@@ -37,9 +38,11 @@ struct SolveResult {
   VectorXd w;
   double eps = 0;  // eps of the last level
   std::vector<LevelRecord> levels;
-  bool converged = false;
-  std::string message;  // why not, when not converged
-  double seconds_factorize = 0, seconds_iterate = 0;
+  bool stopped = false;    // the paper's stopping rules were met
+  PenaltyBound bound;      // how far w can be from w_eps, from the residual of (2a)
+  bool converged = false;  // stopped, and the bound is within tol: the answer is certified
+  std::string message;     // why not, when not converged
+  double seconds_factorize = 0, seconds_iterate = 0, seconds_bound = 0;
   int total_iterations() const;
 };
 
@@ -53,7 +56,9 @@ LevelRecord nonlinear_scheme_level(const Problem& p, double eps, VectorXd& w, Ch
                                    double* seconds_factorize = nullptr);
 
 // The full method: starting guess w = 0, eps levels eps_start, eps_start/10, ... until successive
-// levels agree within tol. Never throws for non-convergence: the result says converged = false.
+// levels agree within tol. Then the last iterate is certified: converged only if it is provably
+// within tol of w_eps at the last eps (penalty_error_bound). Never throws for non-convergence:
+// the result says converged = false and why.
 SolveResult solve(const Problem& p, const SolveOptions& o);
 
 // Throws std::invalid_argument naming the option if an option is out of range.

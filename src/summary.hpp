@@ -23,11 +23,6 @@ struct Report {
   double seconds_assemble = 0, seconds_total = 0;
 };
 
-// The paper's stopping rules look at steps, not at the equation: at small eps the linear scheme's
-// steps fall below tol long before it solves (2a). We flag a last iterate whose relative residual
-// of (2a) exceeds this.
-constexpr double kResidualLimit = 1e-6;
-
 std::string nodal_csv(const NodalFields& f);
 std::string summary_json(const Report& r);
 std::string summary_text(const Report& r);  // the few lines printed at the end of a run

@@ -35,7 +35,7 @@ Run run(const Problem& p, Scheme scheme, double tol, const EpsLimit& limit, doub
   Run x;
   x.iterations = r.total_iterations();
   x.eps = r.eps;
-  x.converged = r.converged;
+  x.converged = r.stopped;  // the paper's rules; the error column says how good that was
   x.last_step = r.levels.back().last_step;
   x.error = max_nodal_abs(r.w - limit.w);
   x.residual = penalty_residual(p, r.w, r.eps);

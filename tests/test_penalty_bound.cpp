@@ -1,0 +1,66 @@
+// The a posteriori bound that decides whether a penalty run is an answer: it must hold (never below
+// the true distance to w_eps), be sharp enough to be useful, and rest on the right Green's function.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "paper_case.hpp"
+#include "penalty_bound.hpp"
+#include "schemes.hpp"
+
+using namespace plate;
+
+TEST(PenaltyBound, HoldsAndIsWithinAFactorOfTheTrueErrorAlongTheLinearScheme) {
+  for (SamplingKind kind : {SamplingKind::Gauss, SamplingKind::Nodes}) {
+    const Problem p = paper_problem(8, kind);
+    const double eps = 1e-5;  // contraction 1/(1 + eps lambda_1h) ~ 0.987: slow, errors stay visible
+    SolveOptions o;
+    o.scheme = Scheme::Nonlinear;
+    o.continuation = false;
+    o.eps_start = eps;
+    o.tol = 1e-14;
+    const VectorXd w_eps = solve(p, o).w;  // (3a) solves each active set exactly
+    std::vector<VectorXd> iterates;
+    o.scheme = Scheme::Linear;
+    o.max_iter = 200;
+    o.tol = 1e-300;  // run all 200 steps
+    o.on_iterate = [&](double, int k, const VectorXd& w) {
+      if (k == 2 || k == 10 || k == 50 || k == 200) iterates.push_back(w);
+    };
+    solve(p, o);
+    ASSERT_EQ(iterates.size(), 4u);
+    Cholesky chol;
+    chol.analyze(p.K);
+    for (const VectorXd& w : iterates) {
+      const double truth = max_nodal_abs(w - w_eps);
+      const PenaltyBound b = penalty_error_bound(p, w, eps, chol);
+      std::printf("  %s: true error %.3e, bound %.3e (ratio %.1f), round-off floor %.1e\n", to_string(kind), truth,
+                  b.bound, b.bound / truth, b.roundoff);
+      EXPECT_GE(b.bound, truth);
+      EXPECT_LE(b.bound, 100 * truth);
+    }
+  }
+}
+
+TEST(PenaltyBound, GreensFunctionPeaksAtTheCentreAndIsThePointLoadCoefficient) {
+  // (K^{-1})_ii is the deflection at node i under a unit point load there: largest at the centre,
+  // where Timoshenko & Woinowsky-Krieger give 0.00560 a^2 / D for the clamped square.
+  for (auto [nx, lx] : {std::pair{8, 1.0}, {12, 1.5}}) {
+    const Grid g = make_grid(nx, lx, 1.0);
+    const Problem p = make_problem(g, SamplingKind::Nodes, [](double, double) { return -1.0; },
+                                   [](double, double) { return 0.0; });
+    Cholesky chol;
+    chol.factorize(p.K);
+    const Eigen::MatrixXd inverse = chol.solve_many(Eigen::MatrixXd::Identity(g.unknowns(), g.unknowns()));
+    double largest = 0;
+    for (int q = 0; q < g.unknowns(); q += 4) largest = std::max(largest, inverse(q, q));
+    EXPECT_DOUBLE_EQ(largest, inverse(centre_value_dof(g), centre_value_dof(g))) << "lx = " << lx;
+  }
+  const Problem square = make_problem(make_grid(64), SamplingKind::Nodes, [](double, double) { return -1.0; },
+                                      [](double, double) { return 0.0; });
+  Cholesky chol;
+  chol.analyze(square.K);
+  const PenaltyBound b = penalty_error_bound(square, VectorXd::Zero(square.grid.unknowns()), 1.0, chol);
+  std::printf("  (K^-1)_cc = %.7f at n = 64 (published 0.00560)\n", b.green);
+  EXPECT_NEAR(b.green, 0.00560, 0.00560 * 0.01);
+}
