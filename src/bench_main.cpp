@@ -328,6 +328,7 @@ std::string report(const std::vector<Outcome>& outcomes, const std::map<int, con
 }  // namespace
 
 int main(int argc, char** argv) {
+  plate::clean_up_on_interrupt("bench");
   CLI::App app{"bench: work-precision study of the exact-constraint solver and the penalty schemes (make bench)"};
   std::string out_dir = "results", paper_numbers = "reference/paper_numbers.csv";
   int max_exact = 1024, max_baseline = 512, max_nonlinear = 128, max_linear = 64;

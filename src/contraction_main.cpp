@@ -16,6 +16,7 @@
 using namespace plate;
 
 int main(int argc, char** argv) {
+  plate::clean_up_on_interrupt("contraction");
   CLI::App app{"contraction: Theorem 2 of the paper checked on the discrete problem; writes contraction.md."};
   std::string reference = "reference", out = "results";
   std::vector<int> grids = {4, 16};

@@ -36,6 +36,7 @@ struct Series {
 }  // namespace
 
 int main(int argc, char** argv) {
+  plate::clean_up_on_interrupt("crosscheck");
   CLI::App app{"crosscheck: the paper's problem (f = 0, R = 0.0625 on the disk of radius 0.25) by this code\n"
                "and by FreeFEM (HCT elements, gmsh meshes following the contact circle); writes the report."};
   std::vector<double> lcs = {0.1, 0.05, 0.025, 0.0125};

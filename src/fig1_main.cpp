@@ -18,6 +18,7 @@
 using namespace plate;
 
 int main(int argc, char** argv) {
+  plate::clean_up_on_interrupt("fig1");
   CLI::App app{"fig1: the data of Fig. 1 (check points; the deflection of the paper's problem and its contact set)."};
   std::string reference = "reference", out = "results", sampling = "gauss";
   int n = 32, lattice = 64;

@@ -82,6 +82,7 @@ const char* kColumns =
 }  // namespace
 
 int main(int argc, char** argv) {
+  plate::clean_up_on_interrupt("fig2");
   CLI::App app{"fig2: the data of the paper's Fig. 2 (max|xi|, max|m12|, max|w| at the nodes against the obstacle\n"
                "height R; f = 0) on h = 1/4 and a fine grid, both samplings; writes fig2.csv, fig2_mesh.csv, fig2_fit.md."};
   std::string reference = "reference", out = "results";

@@ -53,6 +53,7 @@ std::pair<double, double> parse_pair(const std::string& option, const std::strin
 }  // namespace
 
 int main(int argc, char** argv) {
+  plate::clean_up_on_interrupt("plate");
   using namespace plate;
   CLI::App app{
       "plate: a clamped elastic plate over a rigid obstacle (V. A. Kovtunenko, 1994).\n"
@@ -119,7 +120,7 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_option("--nu", nu, "Poisson's ratio for the bending moments")
-      ->check(CLI::Range(-1.0, 0.5))
+      ->check(kFinite & CLI::Range(-1.0, 0.5))
       ->capture_default_str();
   app.add_option("--point", points, "report w at 'x,y' (repeatable)");
   app.add_option("--csv", csv_path, "write the nodal fields (CSV) here");
@@ -130,7 +131,15 @@ int main(int argc, char** argv) {
   app.add_flag("--no-nested", no_nested, "exact scheme: start from an empty active set, not from the coarser grid");
   app.add_flag("--rate", rate, "also compute lambda_1h and the linear scheme's contraction factors");
   app.add_flag("-q,--quiet", quiet, "print nothing but errors");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // CLI11 has its own exit codes; every bad input exits with the one documented in --help.
+    std::cerr << "plate: bad input: " << e.what() << "\n";
+    return kBadInput;
+  }
 
   const auto t0 = plate::Clock::now();
   try {
@@ -219,7 +228,9 @@ int main(int argc, char** argv) {
     report.nodes = &nodes;
     report.seconds_total = seconds_since(t0);
 
-    if (!csv_path.empty()) write_file_atomically(csv_path, nodal_csv(nodes));
+    // A run that is not an answer says so in every output, so a file read later cannot be mistaken for one.
+    const std::string warning = result.converged ? "" : "# NOT CONVERGED: " + result.message + "\n";
+    if (!csv_path.empty()) write_file_atomically(csv_path, warning + nodal_csv(nodes));
     if (!json_path.empty()) write_file_atomically(json_path, summary_json(report));
     if (!quiet) std::cout << summary_text(report);
     if (!result.converged) {

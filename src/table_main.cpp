@@ -105,6 +105,7 @@ std::string csv(const std::vector<Case>& cases, const std::vector<PublishedRow>&
 }  // namespace
 
 int main(int argc, char** argv) {
+  plate::clean_up_on_interrupt("table");
   CLI::App app{"table: the paper's experiment (its table) rerun with the linear scheme (5a) and the nonlinear\n"
                "scheme (3a), both samplings, on h = 1/4 and finer grids; writes table.md/.csv and table_fine.md/.csv."};
   std::string reference = "reference", out = "results";
