@@ -1,0 +1,40 @@
+#include "eps_sweep.hpp"
+
+#include <cmath>
+
+#include "stopwatch.hpp"
+
+namespace plate {
+
+SweepRow sweep_row(const Problem& p, Scheme scheme, double eps, double tol, int max_iter, const VectorXd& reference) {
+  SolveOptions o;
+  o.scheme = scheme;
+  o.continuation = false;
+  o.eps_start = eps;
+  o.tol = tol;
+  o.max_iter = max_iter;
+  SweepRow row;
+  o.on_iterate = [&](double, int k, const VectorXd& w) {
+    if (k == 1) row.first_step = max_nodal_abs(w);
+  };
+  const auto t0 = Clock::now();
+  const SolveResult r = solve(p, o);
+  row.seconds = seconds_since(t0);
+  row.scheme = scheme;
+  row.eps = eps;
+  row.tol = tol;
+  row.converged = r.converged;
+  row.message = r.message;
+  row.iterations = r.total_iterations();
+  row.factorizations = r.levels.empty() ? 0 : r.levels[0].factorizations;
+  row.bound = r.bound;
+  row.violation = (p.phi - p.sampling.S * r.w).cwiseMax(0.0).maxCoeff();
+  row.error = max_nodal_abs(r.w - reference);
+  return row;
+}
+
+double predicted_linear_iterations(double first_step, double tol, double eps, double lambda1) {
+  return 1.0 + std::log(first_step / tol) / std::log1p(eps * lambda1);
+}
+
+}  // namespace plate

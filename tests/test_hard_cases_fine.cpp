@@ -1,0 +1,90 @@
+// The hard cases on a million unknowns (n = 512): every scheme, and the linear scheme's slow
+// convergence against the rate its theory predicts with the published first eigenvalue.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "active_set.hpp"
+#include "eps_sweep.hpp"
+#include "paper_case.hpp"
+#include "published.hpp"
+
+using namespace plate;
+
+namespace {
+constexpr int kFine = 512;
+double lambda1() {
+  return published(read_paper_numbers(std::string(PLATE_SOURCE_DIR) + "/reference/plate_constants.csv"), "lambda1");
+}
+double m_norm(const Problem& p, const VectorXd& v) { return std::sqrt(v.dot(p.M * v)); }
+}  // namespace
+
+TEST(FineGrid, LinearSchemeContractsAtTheRateOfTheFirstEigenvalue) {
+  // No contact (phi = -1 is never reached under f = 1): (5a) is then a linear iteration whose
+  // error shrinks, mode by mode, by 1/(1 + eps lambda_k). The slowest mode is the first, so the
+  // ratio of successive steps tends to 1/(1 + eps lambda_1h), and lambda_1h -> lambda_1.
+  const Problem p = make_problem(make_grid(kFine), SamplingKind::Nodes, [](double, double) { return -1.0; },
+                                 [](double, double) { return 1.0; });
+  const double eps = 1e-4;
+  std::vector<double> steps;
+  VectorXd previous = VectorXd::Zero(p.grid.unknowns());
+  SolveOptions o;
+  o.tol = 1e-300;
+  o.max_iter = 40;
+  o.on_iterate = [&](double, int, const VectorXd& w) {
+    steps.push_back(m_norm(p, w - previous));
+    previous = w;
+  };
+  Cholesky chol;
+  chol.analyze(p.K);
+  VectorXd w = VectorXd::Zero(p.grid.unknowns());
+  linear_scheme_level(p, eps, w, chol, o);
+  ASSERT_EQ(steps.size(), 40u);
+  const double ratio = steps[39] / steps[38], measured = (1 / ratio - 1) / eps;
+  std::printf("n = %d: step ratio %.9f, so lambda_1h = %.4f (published lambda_1 = %.5f)\n", kFine, ratio, measured,
+              lambda1());
+  for (size_t k = 1; k < steps.size(); ++k) EXPECT_LE(steps[k], steps[k - 1] / (1 + eps * lambda1()) * (1 + 1e-6));
+  EXPECT_NEAR(measured, lambda1(), 1e-5 * lambda1());
+}
+
+TEST(FineGrid, NonlinearSchemeAndExactSolverAgreeOnAMillionUnknowns) {
+  const Problem p = paper_problem(kFine, SamplingKind::Nodes);
+  const ExactResult exact = solve_exact(p, ExactOptions{});
+  ASSERT_TRUE(exact.converged) << exact.message;
+  EXPECT_LE(exact.certificate.worst(), 1e-10);
+  EXPECT_LE(asymmetry(p.grid, exact.w), 1e-12 * max_nodal_abs(exact.w));
+  const double eps = 1e-7;
+  const SweepRow row = sweep_row(p, Scheme::Nonlinear, eps, 1e-6, 100, exact.w);
+  std::printf("(3a) at eps = %g: %d steps, %d factorisations, %.1f s, bound %.2e, %.2e from the exact solution\n", eps,
+              row.iterations, row.factorizations, row.seconds, row.bound.bound, row.error);
+  ASSERT_TRUE(row.converged) << row.message;
+  EXPECT_LE(row.error, 1e-6 + 2 * eps * exact.lambda.maxCoeff());  // within tol of w_eps, which sinks by ~eps xi
+}
+
+TEST(FineGrid, LinearSchemeOnTheContactProblemIsSlowAsPredicted) {
+  // With contact, Theorem 2 still bounds every step by 1/(1 + eps lambda_1) times the last. At
+  // eps = 1e-4 the contraction is only ~0.885 a step, and the stopped iterate is not yet w_eps.
+  const Problem p = paper_problem(kFine, SamplingKind::Nodes);
+  const double eps = 1e-4, tol = 1e-6;
+  std::vector<double> steps;
+  VectorXd previous = VectorXd::Zero(p.grid.unknowns());
+  SolveOptions o;
+  o.scheme = Scheme::Linear;
+  o.continuation = false;
+  o.eps_start = eps;
+  o.tol = tol;
+  o.max_iter = 400;
+  o.on_iterate = [&](double, int, const VectorXd& w) {
+    steps.push_back(m_norm(p, w - previous));
+    previous = w;
+  };
+  const SolveResult r = solve(p, o);
+  ASSERT_TRUE(r.stopped) << r.message;
+  const double rho = 1 / (1 + eps * lambda1());
+  for (size_t k = 1; k < steps.size(); ++k) EXPECT_LE(steps[k], steps[k - 1] * rho * (1 + 1e-6)) << "step " << k;
+  std::printf("(5a) at eps = %g: %d steps (contraction bound %.4f), error bound %.2e against tol %.0e\n", eps,
+              r.total_iterations(), rho, r.bound.bound, tol);
+  // Stopped on a step below tol, but |w - w_eps| can be up to rho / (1 - rho) ~ 7.7 steps: not certified.
+  EXPECT_FALSE(r.converged);
+  EXPECT_NE(r.message.find("stopped before it solved (2a)"), std::string::npos) << r.message;
+}
