@@ -30,6 +30,7 @@ SweepRow sweep_row(const Problem& p, Scheme scheme, double eps, double tol, int 
   row.bound = r.bound;
   row.violation = (p.phi - p.sampling.S * r.w).cwiseMax(0.0).maxCoeff();
   row.error = max_nodal_abs(r.w - reference);
+  row.w = r.w;
   return row;
 }
 

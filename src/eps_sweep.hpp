@@ -8,6 +8,7 @@
 namespace plate {
 
 struct SweepRow {
+  VectorXd w;                  // the last iterate
   Scheme scheme = Scheme::Linear;
   double eps = 0, tol = 0;
   bool converged = false;      // stopped and certified by the error bound

@@ -6,6 +6,7 @@
 
 #include "assemble.hpp"
 #include "grid.hpp"
+#include "problem.hpp"
 
 namespace plate {
 
@@ -54,4 +55,30 @@ inline int contact_regions(const Grid& g, const std::vector<char>& touching) {
   return regions;
 }
 
+// A complementarity problem on which the plain primal-dual iteration cycles from the empty set:
+// lambda = M z + q, 0 <= z _|_ lambda >= 0, with M symmetric positive definite but not an M-matrix
+// (a 3 x 3 case found by random search; the plate's own matrices gave none, see the document).
+// It is put in a Problem on the 4 x 4 grid: nodes 0, 1, 2 carry M on their value unknowns,
+// every other unknown is decoupled, and phi = 0, F = -q, weights 1 make z = w and lambda as above.
+inline Problem cycling_problem() {
+  const double M[3][3] = {{1.56, 1.14, -0.47}, {1.14, 3.51, -2.38}, {-0.47, -2.38, 1.71}};
+  const double q[3] = {-0.09, -0.80, 0.58};
+  Problem p = make_problem(make_grid(4), SamplingKind::Nodes, [](double, double) { return -1.0; }, [](double, double) { return 0.0; });
+  const int n = p.grid.unknowns();
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < n; ++i)
+    if (i % 4 != 0 || i >= 12) t.emplace_back(i, i, 1.0);
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) t.emplace_back(4 * a, 4 * b, M[a][b]);
+  p.K.resize(n, n);
+  p.K.setFromTriplets(t.begin(), t.end());
+  p.F = VectorXd::Zero(n);
+  p.phi = VectorXd::Constant(p.phi.size(), -INFINITY);
+  p.sampling.weights.setOnes();
+  for (int a = 0; a < 3; ++a) {
+    p.F[4 * a] = -q[a];
+    p.phi[a] = 0.0;
+  }
+  return p;
+}
 }  // namespace plate

@@ -61,15 +61,14 @@ TEST(HardCases, FlatSupportIsTouchedOnAnAreaWhereTheForceEqualsTheLoad) {
   const double q = 1.0, sag = constant("uniform_centre") * q;
   const Grid g32 = make_grid(32);
   for (double factor : {1.01, 0.99}) {
-    const ExactResult r = solve_exact(make_problem(g32, SamplingKind::Nodes, uniform(-sag * factor), uniform(-q)), ExactOptions{});
+    const ExactResult r = solve_exact(g32, uniform(-sag * factor), uniform(-q), ExactOptions{});
     ASSERT_TRUE(r.converged) << r.message;
     EXPECT_EQ(count(r.active) > 0, factor < 1) << "R = " << factor << " x the published sag";
   }
   int touching[2];
   for (int k : {0, 1}) {
     const Grid g = make_grid(64 << k);
-    const Problem p = make_problem(g, SamplingKind::Nodes, uniform(-5e-4), uniform(-q));
-    const ExactResult r = solve_exact(p, ExactOptions{});
+    const ExactResult r = solve_exact(g, uniform(-5e-4), uniform(-q), ExactOptions{});  // grid-sequenced
     ASSERT_TRUE(r.converged) << r.message;
     touching[k] = count(r.active);
     const double centre = r.lambda[g.node(g.nx / 2, g.ny / 2)];

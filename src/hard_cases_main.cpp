@@ -1,0 +1,342 @@
+// hard_cases: writes results/hard_cases.md, the cases the paper did not try and every kind of bad
+// input, each with what it gets: a certified answer, or a failure that says why.
+// `hard_cases --help` lists the options.
+#include <CLI/CLI.hpp>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "active_set.hpp"
+#include "atomic_file.hpp"
+#include "contraction.hpp"
+#include "eps_limit.hpp"
+#include "eps_sweep.hpp"
+#include "fields.hpp"
+#include "contact.hpp"
+#include "format.hpp"
+#include "published.hpp"
+#include "scenes.hpp"
+#include "stopwatch.hpp"
+
+using namespace plate;
+
+namespace {
+
+Field uniform(double f) {
+  return [f](double, double) { return f; };
+}
+int count(const NodeSet& s) { return static_cast<int>(std::count(s.begin(), s.end(), 1)); }
+std::string yes_no(bool b) { return b ? "yes" : "**no**"; }
+
+// The failure in a few words, from the solver's message.
+std::string why_not(const SweepRow& r) {
+  if (r.converged) return "";
+  if (r.message.find("round-off") != std::string::npos) return "round-off: eps^-1 (w - phi) cannot be evaluated to tol";
+  if (r.message.find("max-iter") != std::string::npos) return "iteration cap reached";
+  if (r.message.find("stopped before") != std::string::npos) return "steps below tol, error above: not w_eps";
+  return r.message;
+}
+
+void eps_sweep(std::ostream& md, const Problem& p, const VectorXd& reference, const std::string& reference_name,
+               double tol, int cap, double lambda1) {
+  md << "| scheme | eps | certified | iterations | predicted (5a) | factorisations | error bound | round-off floor"
+        " | violation | error vs " << reference_name << " | why not |\n|---|---:|:---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
+  for (Scheme s : {Scheme::Nonlinear, Scheme::Linear}) {
+    double smallest_certified = 0;
+    for (int e = 2; e <= 14; ++e) {
+      const double eps = std::pow(10.0, -e);
+      std::cerr << "hard_cases: " << to_string(s) << " at eps = " << eps << "\n";
+      const SweepRow r = sweep_row(p, s, eps, tol, cap, reference);
+      if (r.converged) smallest_certified = eps;
+      const std::string predicted =
+          s == Scheme::Linear ? fmt("%.0f", predicted_linear_iterations(r.first_step, tol, eps, lambda1)) : "";
+      md << "| " << (s == Scheme::Linear ? "(5a) linear" : "(3a) nonlinear") << " | " << fmt("%.0e", eps) << " | "
+         << yes_no(r.converged) << " | " << r.iterations << " | " << predicted << " | " << r.factorizations << " | "
+         << fmt("%.1e", r.bound.bound) << " | " << fmt("%.1e", r.bound.roundoff) << " | " << fmt("%.1e", r.violation)
+         << " | " << fmt("%.1e", r.error) << " | " << why_not(r) << " |\n";
+    }
+    md << "\n" << (s == Scheme::Linear ? "(5a)" : "(3a)") << ": smallest certified eps "
+       << (smallest_certified > 0 ? fmt("%.0e", smallest_certified) : std::string("none")) << ".\n\n";
+  }
+}
+
+struct Captured {
+  int status = -1;
+  std::string output;
+};
+
+Captured run(const std::string& command) {
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen((command + " 2>&1").c_str(), "r"), pclose);
+  Captured c;
+  std::array<char, 4096> buf;
+  size_t got;
+  while ((got = std::fread(buf.data(), 1, buf.size(), pipe.get())) > 0) c.output.append(buf.data(), got);
+  const int raw = pclose(pipe.release());
+  c.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return c;
+}
+
+std::string table_cell(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  std::string out;
+  for (char ch : s) out += ch == '|' ? std::string("\\|") : ch == '\n' ? std::string(" / ") : std::string(1, ch);
+  return out;
+}
+
+void bad_input(std::ostream& md, const std::string& plate, const std::string& cases, const std::string& scratch) {
+  std::ifstream in(cases);
+  if (!in) throw std::runtime_error("cannot read " + cases);
+  md << "| input | exit status (expected) | message |\n|---|:---:|---|\n";
+  int n = 0, as_expected = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    std::string args, status, names;
+    std::getline(fields, args, '\t');
+    std::getline(fields, status, '\t');
+    std::getline(fields, names);
+    const std::string json = scratch + "/bad.json";
+    std::filesystem::remove(json);
+    const bool own_json = args.find("--json") != std::string::npos;
+    const Captured c = run(plate + " -q " + args + (own_json ? "" : " --json " + json));
+    const bool file_ok = own_json || (c.status == 3) == std::filesystem::exists(json);
+    const bool ok = c.status == std::stoi(status) && c.output.find(names) != std::string::npos && file_ok;
+    ++n;
+    as_expected += ok;
+    md << "| `plate " << table_cell(args) << "` | " << c.status << " (" << status << ")" << (ok ? "" : " **unexpected**")
+       << " | " << table_cell(c.output) << " |\n";
+  }
+  md << "\n" << as_expected << " of " << n << " cases behave as expected (status, a message naming the input, and an "
+     << "output file only for status 3, where it says it did not converge).\n\n";
+}
+
+void interrupted(std::ostream& md, const std::string& plate, const std::string& scratch) {
+  const std::filesystem::path dir = std::filesystem::path(scratch) / "interrupt";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string err = (dir / "stderr.txt").string(), json = (dir / "run.json").string(),
+                    csv = (dir / "run.csv").string();
+  const pid_t child = fork();
+  if (child < 0) throw std::runtime_error("fork failed");
+  if (child == 0) {
+    if (!std::freopen(err.c_str(), "w", stderr)) _exit(126);
+    execl(plate.c_str(), plate.c_str(), "-n", "256", "-q", "--json", json.c_str(), "--csv", csv.c_str(), (char*)nullptr);
+    _exit(127);
+  }
+  usleep(500 * 1000);
+  kill(child, SIGINT);
+  int raw = 0;
+  waitpid(child, &raw, 0);
+  std::ifstream e(err);
+  std::stringstream es;
+  es << e.rdbuf();
+  int left = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) left += entry.path().filename() != "stderr.txt";
+  md << "`plate -n 256 --json run.json --csv run.csv`, sent SIGINT after 0.5 s: exit status "
+     << (WIFEXITED(raw) ? std::to_string(WEXITSTATUS(raw)) : std::string("(killed)")) << ", message \""
+     << table_cell(es.str()) << "\", files left in the output folder: " << left << ".\n\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  plate::clean_up_on_interrupt("hard_cases");
+  CLI::App app{"hard_cases: the cases the paper did not try (tiny eps, point and area contact, many contact regions,\n"
+               "zero-force contact, n = 512, the cycling active set) and every kind of bad input for `plate`;\n"
+               "writes hard_cases.md."};
+  std::string out = "results", reference = "reference", cases = "tests/bad_input.tsv", scratch = "build/hard-cases-work";
+  std::string plate = (std::filesystem::path(argv[0]).parent_path() / "plate").string();
+  int fine = 512;
+  app.add_option("--out", out, "folder for the report")->capture_default_str();
+  app.add_option("--reference", reference, "folder with plate_constants.csv")->check(CLI::ExistingDirectory)->capture_default_str();
+  app.add_option("--cases", cases, "the bad-input list")->check(CLI::ExistingFile)->capture_default_str();
+  app.add_option("--plate", plate, "the plate program")->check(CLI::ExistingFile)->capture_default_str();
+  app.add_option("--scratch", scratch, "folder for temporary files")->capture_default_str();
+  app.add_option("--fine", fine, "the fine grid n")->check(CLI::Range(8, 4096))->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+  try {
+    std::filesystem::create_directories(scratch);
+    const auto constants = read_paper_numbers(reference + "/plate_constants.csv");
+    const double lambda1 = published(constants, "lambda1"), point = published(constants, "point_centre"),
+                 sag = published(constants, "uniform_centre");
+    std::ostringstream md;
+    md << "<!-- Written by build/hard_cases (make all); do not edit. -->\n\n";
+
+    // --- eps -> 0 ---
+    md << "### Small eps\n\nThe paper's problem, each eps alone (no continuation) from w = 0, tol = 1e-8, at most "
+          "20000 iterations. A run is certified when its steps met tol and the error bound from the residual of (2a) "
+          "is within tol. \"predicted (5a)\" is 1 + ln(first step / tol) / ln(1 + eps lambda_1) with the published "
+          "lambda_1 = " << lambda1 << ": Theorem 2 says (5a) needs no more.\n\n";
+    {
+      const Problem p = make_problem(make_grid(16), SamplingKind::Nodes, cylinder(0.5, 0.5, 0.25, 0.0625), uniform(0));
+      const ExactResult exact = solve_exact(p, ExactOptions{});
+      md << "**h = 1/16, nodal sampling**, against the exact-constraint solution (certificate "
+         << fmt("%.1e", exact.certificate.worst()) << "):\n\n";
+      eps_sweep(md, p, exact.w, "exact", 1e-8, 20000, lambda1);
+    }
+    {
+      const Problem p = make_problem(make_grid(16), SamplingKind::Gauss, cylinder(0.5, 0.5, 0.25, 0.0625), uniform(0));
+      const EpsLimit limit = eps_limit(p);
+      md << "**h = 1/16, Gauss sampling**, against the eps -> 0 limit extrapolated from eps = 1e-12 (error ratio per "
+            "decade " << fmt("%.3f", limit.ratio) << "; the limit is uncertain by " << fmt("%.0e", limit.estimate)
+         << "):\n\n";
+      eps_sweep(md, p, limit.w, "eps-limit", 1e-8, 20000, lambda1);
+    }
+    // --- point obstacle ---
+    md << "### A point obstacle\n\nHeight 0.01 at the centre node only, f = 0, exact-constraint solver. The obstacle "
+          "acts as a point load P, so w_c / P must approach the published coefficient " << point
+       << " (Timoshenko & Woinowsky-Krieger).\n\n| n | touching nodes | P | w_c / P | relative difference |\n"
+          "|---:|---:|---:|---:|---:|\n";
+    for (int n : {16, 32, 64, 128}) {
+      const Grid g = make_grid(n);
+      const Problem p = make_problem(g, SamplingKind::Nodes, centre_spike(g, 0.01), uniform(0));
+      const ExactResult r = solve_exact(p, ExactOptions{});
+      const double P = p.sampling.weights.dot(r.lambda);
+      md << "| " << n << " | " << count(r.active) << " | " << fmt("%.4f", P) << " | " << fmt("%.7f", 0.01 / P) << " | "
+         << fmt("%+.2e", (0.01 / P - point) / point) << (r.converged ? "" : " (not converged)") << " |\n";
+    }
+    // --- flat support ---
+    md << "\n### A flat support: contact on an area\n\nf = -q, phi = -R everywhere (q = 1), exact-constraint solver. "
+          "The free plate sags by " << sag << " q at the centre (published), so contact must start when R drops below "
+          "that; inside the contact area w = -R, so Lap^2 w = 0 and the force density equals q.\n\n";
+    for (double factor : {1.01, 0.99}) {
+      const ExactResult r = solve_exact(make_grid(32), uniform(-sag * factor), uniform(-1), ExactOptions{});
+      md << "- n = 32, R = " << fmt("%.2f", factor) << " x the published sag: " << count(r.active) << " touching nodes"
+         << (r.converged ? "" : " (not converged)") << ".\n";
+    }
+    md << "\nR = 5e-4, grid-sequenced (the default: each grid starts from the contact set of the one twice as coarse) "
+          "and, up to n = 128, from an empty set:\n\n| n | touching nodes | ratio to the coarser grid | force density at "
+          "the centre | total force | PDAS its | factorisations | s | cold start: PDAS its | cold start: s |\n"
+          "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    int previous = 0;
+    for (int n : {32, 64, 128, 256}) {
+      const Grid g = make_grid(n);
+      const Problem p = make_problem(g, SamplingKind::Nodes, uniform(-5e-4), uniform(-1));
+      std::cerr << "hard_cases: flat support, n = " << n << "\n";
+      auto t0 = Clock::now();
+      const ExactResult r = solve_exact(p, uniform(-5e-4), uniform(-1), ExactOptions{});
+      const double s = seconds_since(t0);
+      const ExactLevel& l = r.levels.back();
+      md << "| " << n << " | " << count(r.active) << " | "
+         << (previous ? fmt("%.2f", double(count(r.active)) / previous) : std::string("")) << " | "
+         << fmt("%.5f", r.lambda[g.node(n / 2, n / 2)]) << " | " << fmt("%.5f", p.sampling.weights.dot(r.lambda))
+         << " | " << l.pdas_iterations << " | " << l.factorizations << " | " << fmt("%.2f", s)
+         << (r.converged ? "" : " (not converged)") << " | ";
+      if (n <= 128) {
+        t0 = Clock::now();
+        const ExactResult cold = solve_exact(p, ExactOptions{});
+        md << cold.levels.back().pdas_iterations << " | " << fmt("%.2f", seconds_since(t0)) << " |\n";
+      } else {
+        md << " | |\n";
+      }
+      previous = count(r.active);
+    }
+    md << "\nThe number of touching nodes grows about 4 times per halving of h, as an area does (a curve would give "
+          "2), and the force density at the centre tends to q. From an empty set the primal-dual iteration needs "
+          "about n/2 iterations here, most with their own factorisation, so its cost grows like n times a "
+          "factorisation; started from the coarser grid's contact set it needs a handful.\n\n";
+    // --- bumps ---
+    md << "### Many contact regions\n\nSixteen bumps, phi = -1 + 0.99 (sin 4 pi x sin 4 pi y)^4 (tops at -0.01), "
+          "under f = -q, n = 64, exact-constraint solver; regions are connected groups of touching nodes (neighbours "
+          "along grid lines and diagonals). The regions come in the symmetry orbits of the square (4 inner, 8 edge, "
+          "4 corner bumps). (3a) at eps = 1e-10 is a second algorithm for the same answer.\n\n"
+          "| q | regions | touching nodes | certificate | (3a) certified | (3a) regions | (3a) vs exact | eps max lambda |\n"
+          "|---:|---:|---:|---:|:---:|---:|---:|---:|\n";
+    for (double q : {100.0, 300.0, 1000.0}) {
+      const Grid g = make_grid(64);
+      const Problem p = make_problem(g, SamplingKind::Nodes, bumps(4, -1.0, -0.01), uniform(-q));
+      const ExactResult r = solve_exact(p, ExactOptions{});
+      const SweepRow pen = sweep_row(p, Scheme::Nonlinear, 1e-10, 1e-8, 100, r.w);
+      const VectorXd xi = contact_force_density(p, pen.w, 1e-10);
+      NodeSet touched(xi.size());
+      for (int k = 0; k < xi.size(); ++k) touched[k] = xi[k] > 0;
+      md << "| " << q << " | " << contact_regions(g, r.active) << " | " << count(r.active) << " | "
+         << fmt("%.1e", r.certificate.worst()) << " | " << yes_no(pen.converged) << " | " << contact_regions(g, touched)
+         << " | " << fmt("%.1e", pen.error) << " | " << fmt("%.1e", 1e-10 * r.lambda.maxCoeff()) << " |\n";
+    }
+    // --- just touching ---
+    {
+      const Grid g = make_grid(32);
+      const Problem free_plate = make_problem(g, SamplingKind::Nodes, uniform(-1), uniform(1));
+      Cholesky chol;
+      chol.factorize(free_plate.K);
+      const VectorXd w_free = chol.solve(free_plate.F);
+      const Problem p = make_problem(g, SamplingKind::Nodes, centre_spike(g, w_free[centre_value_dof(g)]), uniform(1));
+      const ExactResult r = solve_exact(p, ExactOptions{});
+      md << "\n### An obstacle that just touches\n\nf = 1 lifts the free plate to w_free; an obstacle at the centre "
+            "node of exactly the free plate's height there is touched with zero force (n = 32): total force "
+         << fmt("%.1e", p.sampling.weights.dot(r.lambda)) << " (load " << fmt("%.1e", free_plate.F.lpNorm<1>())
+         << "), max |w - w_free| = " << fmt("%.1e", (r.w - w_free).lpNorm<Eigen::Infinity>()) << ", certificate "
+         << fmt("%.1e", r.certificate.worst()) << ".\n\n";
+    }
+    // --- fine grid ---
+    {
+      md << "### A million unknowns (n = " << fine << ")\n\nThe paper's problem, nodal sampling.\n\n"
+            "| solver | settings | certified | iterations | factorisations | s | error bound or certificate | "
+            "vs exact |\n|---|---|:---:|---:|---:|---:|---:|---:|\n";
+      const Problem p = make_problem(make_grid(fine), SamplingKind::Nodes, cylinder(0.5, 0.5, 0.25, 0.0625), uniform(0));
+      std::cerr << "hard_cases: n = " << fine << ", exact\n";
+      const auto t0 = Clock::now();
+      const ExactResult exact = solve_exact(p, cylinder(0.5, 0.5, 0.25, 0.0625), uniform(0), ExactOptions{});
+      const double s_exact = seconds_since(t0);
+      int exact_f = 0;
+      for (const auto& l : exact.levels) exact_f += l.factorizations;
+      md << "| exact | tol 1e-10 | " << yes_no(exact.converged) << " | " << exact.levels.back().pdas_iterations << " | "
+         << exact_f << " | " << fmt("%.1f", s_exact) << " | " << fmt("%.1e", exact.certificate.worst()) << " | |\n";
+      for (auto [s, eps, tol] : {std::tuple{Scheme::Nonlinear, 1e-7, 1e-6}, std::tuple{Scheme::Linear, 1e-4, 1e-6}}) {
+        std::cerr << "hard_cases: n = " << fine << ", " << to_string(s) << "\n";
+        const SweepRow r = sweep_row(p, s, eps, tol, 2000, exact.w);
+        md << "| " << (s == Scheme::Linear ? "(5a)" : "(3a)") << " | eps " << fmt("%.0e", eps) << ", tol "
+           << fmt("%.0e", tol) << " | " << yes_no(r.converged) << " | " << r.iterations << " | " << r.factorizations
+           << " | " << fmt("%.1f", r.seconds) << " | " << fmt("%.1e", r.bound.bound) << " | " << fmt("%.1e", r.error)
+           << " |\n";
+      }
+      const Problem free = make_problem(make_grid(fine), SamplingKind::Nodes, uniform(-1), uniform(1));
+      const double eps = 1e-3;
+      const std::vector<double> steps = linear_step_norms(free, eps, 30);
+      const double factor = asymptotic_factor(steps), measured = (1 / factor - 1) / eps;
+      const std::vector<double> contact_steps = linear_step_norms(p, 1e-4, 60);
+      md << "\nThe linear scheme's rate. Without contact (f = 1, phi = -1) at eps = 1e-3, steps shrink by "
+         << fmt("%.9f", factor) << " per iteration, which is 1/(1 + eps lambda) with lambda = " << fmt("%.4f", measured)
+         << "; the published first eigenvalue is " << lambda1 << " (relative difference "
+         << fmt("%.1e", (measured - lambda1) / lambda1) << "). On the paper's problem at eps = 1e-4 the slowest of 60 "
+            "steps shrank by " << fmt("%.6f", slowest_factor(contact_steps)) << ", within Theorem 2's bound "
+         << fmt("%.6f", 1 / (1 + 1e-4 * lambda1)) << ".\n\n";
+    }
+    // --- cycling ---
+    {
+      const Problem p = cycling_problem();
+      ExactOptions plain;
+      plain.globalise = false;
+      const ExactResult a = solve_exact(p, plain), b = solve_exact(p, ExactOptions{});
+      md << "### The active set that cycles\n\nA 3 x 3 complementarity problem with a symmetric positive definite "
+            "matrix that is not an M-matrix (tests/test_active_set.cpp; the plate's own matrices gave none). Plain "
+            "primal-dual active sets: converged " << yes_no(a.converged) << ", message \"" << table_cell(a.message)
+         << "\". With the monotone fallback (the default): converged " << yes_no(b.converged) << " after "
+         << b.levels.back().primal_steps << " fallback steps, energies";
+      for (double e : b.fallback_energies) md << " " << fmt("%.6g", e);
+      md << " (strictly falling), certificate " << fmt("%.1e", b.certificate.worst()) << ".\n\n";
+    }
+    // --- bad input ---
+    md << "### Bad input\n\nEvery line of `tests/bad_input.tsv`, run through `plate -q` (with `--json` to a scratch "
+          "file). Status 2 is bad input, 3 not converged (the outputs are written and say so), 4 another failure. "
+          "The same list is a test in `make test`.\n\n";
+    bad_input(md, plate, cases, scratch);
+    md << "**An interrupted run.** ";
+    interrupted(md, plate, scratch);
+    std::filesystem::create_directories(out);
+    write_file_atomically(out + "/hard_cases.md", md.str());
+  } catch (const std::exception& e) {
+    std::cerr << "hard_cases: " << e.what() << "\n";
+    return 4;
+  }
+  return 0;
+}
