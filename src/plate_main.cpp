@@ -33,6 +33,14 @@ const CLI::Validator kCellCount(
       return (v >= 1 && v <= (1 << 16)) ? std::string() : "must be between 1 and 65536, got " + s;
     },
     "INT in [1, 65536]");
+const CLI::Validator kIterationCap(
+    [](std::string& s) {
+      char* end = nullptr;
+      const long v = std::strtol(s.c_str(), &end, 10);
+      if (end == s.c_str() || *end != '\0') return "must be a whole number, got " + s;
+      return (v >= 1 && v <= 1000000000L) ? std::string() : "must be between 1 and 1e9, got " + s;
+    },
+    "INT in [1, 1e9]");
 const CLI::Validator kFinite(
     [](std::string& s) {
       const double v = std::strtod(s.c_str(), nullptr);
@@ -117,7 +125,7 @@ int main(int argc, char** argv) {
       ->check(kFinitePositive)
       ->capture_default_str();
   app.add_option("--max-iter", opt.max_iter, "iteration cap per eps level; reaching it is a failure")
-      ->check(CLI::PositiveNumber)
+      ->check(kIterationCap)
       ->capture_default_str();
   app.add_option("--nu", nu, "Poisson's ratio for the bending moments")
       ->check(kFinite & CLI::Range(-1.0, 0.5))
