@@ -2,16 +2,10 @@
 // input, each with what it gets: a certified answer, or a failure that says why.
 // `hard_cases --help` lists the options.
 #include <CLI/CLI.hpp>
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <array>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <memory>
 #include <sstream>
 
 #include "active_set.hpp"
@@ -23,6 +17,7 @@
 #include "contact.hpp"
 #include "format.hpp"
 #include "published.hpp"
+#include "run_program.hpp"
 #include "scenes.hpp"
 #include "stopwatch.hpp"
 
@@ -68,22 +63,6 @@ void eps_sweep(std::ostream& md, const Problem& p, const VectorXd& reference, co
   }
 }
 
-struct Captured {
-  int status = -1;
-  std::string output;
-};
-
-Captured run(const std::string& command) {
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen((command + " 2>&1").c_str(), "r"), pclose);
-  Captured c;
-  std::array<char, 4096> buf;
-  size_t got;
-  while ((got = std::fread(buf.data(), 1, buf.size(), pipe.get())) > 0) c.output.append(buf.data(), got);
-  const int raw = pclose(pipe.release());
-  c.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return c;
-}
-
 std::string table_cell(std::string s) {
   while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
   std::string out;
@@ -92,57 +71,29 @@ std::string table_cell(std::string s) {
 }
 
 void bad_input(std::ostream& md, const std::string& plate, const std::string& cases, const std::string& scratch) {
-  std::ifstream in(cases);
-  if (!in) throw std::runtime_error("cannot read " + cases);
   md << "| input | exit status (expected) | message |\n|---|:---:|---|\n";
   int n = 0, as_expected = 0;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream fields(line);
-    std::string args, status, names;
-    std::getline(fields, args, '\t');
-    std::getline(fields, status, '\t');
-    std::getline(fields, names);
+  for (const BadInputCase& c : read_bad_inputs(cases)) {
     const std::string json = scratch + "/bad.json";
     std::filesystem::remove(json);
-    const bool own_json = args.find("--json") != std::string::npos;
-    const Captured c = run(plate + " -q " + args + (own_json ? "" : " --json " + json));
-    const bool file_ok = own_json || (c.status == 3) == std::filesystem::exists(json);
-    const bool ok = c.status == std::stoi(status) && c.output.find(names) != std::string::npos && file_ok;
+    const bool own_json = c.args.find("--json") != std::string::npos;
+    const Captured r = run_captured(plate + " -q " + c.args + (own_json ? "" : " --json " + json));
+    const bool file_ok = own_json || (r.status == 3) == std::filesystem::exists(json);
+    const bool ok = r.status == c.status && r.output.find(c.names) != std::string::npos && file_ok;
     ++n;
     as_expected += ok;
-    md << "| `plate " << table_cell(args) << "` | " << c.status << " (" << status << ")" << (ok ? "" : " **unexpected**")
-       << " | " << table_cell(c.output) << " |\n";
+    md << "| `plate " << table_cell(c.args) << "` | " << r.status << " (" << c.status << ")"
+       << (ok ? "" : " **unexpected**") << " | " << table_cell(r.output) << " |\n";
   }
   md << "\n" << as_expected << " of " << n << " cases behave as expected (status, a message naming the input, and an "
      << "output file only for status 3, where it says it did not converge).\n\n";
 }
 
 void interrupted(std::ostream& md, const std::string& plate, const std::string& scratch) {
-  const std::filesystem::path dir = std::filesystem::path(scratch) / "interrupt";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  const std::string err = (dir / "stderr.txt").string(), json = (dir / "run.json").string(),
-                    csv = (dir / "run.csv").string();
-  const pid_t child = fork();
-  if (child < 0) throw std::runtime_error("fork failed");
-  if (child == 0) {
-    if (!std::freopen(err.c_str(), "w", stderr)) _exit(126);
-    execl(plate.c_str(), plate.c_str(), "-n", "256", "-q", "--json", json.c_str(), "--csv", csv.c_str(), (char*)nullptr);
-    _exit(127);
-  }
-  usleep(500 * 1000);
-  kill(child, SIGINT);
-  int raw = 0;
-  waitpid(child, &raw, 0);
-  std::ifstream e(err);
-  std::stringstream es;
-  es << e.rdbuf();
-  int left = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) left += entry.path().filename() != "stderr.txt";
+  const Interrupted r = interrupt_run(plate, {"-n", "256", "-q"}, scratch + "/interrupt", 500);
   md << "`plate -n 256 --json run.json --csv run.csv`, sent SIGINT after 0.5 s: exit status "
-     << (WIFEXITED(raw) ? std::to_string(WEXITSTATUS(raw)) : std::string("(killed)")) << ", message \""
-     << table_cell(es.str()) << "\", files left in the output folder: " << left << ".\n\n";
+     << (r.status >= 0 ? std::to_string(r.status) : std::string("(killed)")) << ", message \"" << table_cell(r.message)
+     << "\", files left in the output folder: " << r.files_left << ".\n\n";
 }
 
 }  // namespace

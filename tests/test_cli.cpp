@@ -3,17 +3,16 @@
 #include <gtest/gtest.h>
 
 #include <signal.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <array>
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <memory>
 #include <sstream>
 #include <vector>
+
+#include "run_program.hpp"
 
 namespace {
 struct PlateRun {
@@ -22,14 +21,8 @@ struct PlateRun {
 };
 
 PlateRun run_plate(const std::string& args) {
-  const std::string cmd = std::string(PLATE_EXE) + " " + args + " 2>&1";
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
-  std::string out;
-  std::array<char, 4096> buf;
-  size_t got;
-  while ((got = std::fread(buf.data(), 1, buf.size(), pipe.get())) > 0) out.append(buf.data(), got);
-  const int raw = pclose(pipe.release());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+  const plate::Captured c = plate::run_captured(std::string(PLATE_EXE) + " " + args);
+  return {c.status, c.output};
 }
 
 std::string temp_path(const std::string& name) {
@@ -76,30 +69,11 @@ TEST(Cli, ExactSchemeWritesItsCertificate) {
     EXPECT_NE(js.str().find(key), std::string::npos) << key << "\n" << js.str();
 }
 
-struct BadInput {
-  std::string args;
-  int status;         // the exit status expected
-  std::string names;  // the message must contain this
-};
+using BadInput = plate::BadInputCase;
 void PrintTo(const BadInput& c, std::ostream* os) { *os << "plate " << c.args; }
 
-// The cases live in tests/bad_input.tsv, which build/hard_cases also reads to list their messages.
-std::vector<BadInput> bad_inputs() {
-  std::ifstream in(std::string(PLATE_SOURCE_DIR) + "/tests/bad_input.tsv");
-  std::vector<BadInput> cases;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream fields(line);
-    BadInput c;
-    std::string status;
-    std::getline(fields, c.args, '\t');
-    std::getline(fields, status, '\t');
-    std::getline(fields, c.names);
-    c.status = std::stoi(status);
-    cases.push_back(c);
-  }
-  return cases;
-}
+// The cases live in tests/bad_input.tsv, which build/hard_cases also runs for results/hard_cases.md.
+std::vector<BadInput> bad_inputs() { return plate::read_bad_inputs(std::string(PLATE_SOURCE_DIR) + "/tests/bad_input.tsv"); }
 
 class CliBadInput : public ::testing::TestWithParam<BadInput> {};
 
@@ -143,30 +117,11 @@ TEST(Cli, BadInputListIsReadWhole) {
 }
 
 TEST(Cli, InterruptedRunLeavesNoFileBehind) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "plate_cli_interrupt";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  const std::string json = (dir / "run.json").string(), csv = (dir / "run.csv").string(),
-                    err = (dir / "stderr.txt").string();
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    if (!std::freopen(err.c_str(), "w", stderr)) _exit(126);
-    execl(PLATE_EXE, PLATE_EXE, "-n", "256", "-q", "--json", json.c_str(), "--csv", csv.c_str(), (char*)nullptr);
-    _exit(127);
-  }
-  usleep(500 * 1000);  // n = 256 takes over a minute: the signal arrives mid-solve
-  kill(child, SIGINT);
-  int raw = 0;
-  waitpid(child, &raw, 0);
-  ASSERT_TRUE(WIFEXITED(raw));
-  EXPECT_EQ(WEXITSTATUS(raw), 128 + SIGINT);
-  std::ifstream e(err);
-  std::stringstream es;
-  es << e.rdbuf();
-  EXPECT_NE(es.str().find("interrupted"), std::string::npos) << es.str();
-  int left = 0;  // neither output nor a temporary file
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) left += entry.path().filename() != "stderr.txt";
-  EXPECT_EQ(left, 0);
+  const std::string dir = (std::filesystem::temp_directory_path() / "plate_cli_interrupt").string();
+  // n = 256 takes over a minute: the signal arrives mid-solve.
+  const plate::Interrupted r = plate::interrupt_run(PLATE_EXE, {"-n", "256", "-q"}, dir, 500);
+  EXPECT_EQ(r.status, 128 + SIGINT);
+  EXPECT_NE(r.message.find("interrupted"), std::string::npos) << r.message;
+  EXPECT_EQ(r.files_left, 0);  // neither an output nor a temporary file
   std::filesystem::remove_all(dir);
 }
