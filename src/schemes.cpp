@@ -49,7 +49,8 @@ std::string uncertified_message(const SolveResult& r, const SolveOptions& o) {
   std::ostringstream m;
   m << to_string(o.scheme) << " scheme: the stopping rules were met at eps = " << r.eps
     << ", but the residual of (2a) only bounds the error by " << r.bound.bound << " > tol = " << o.tol << ": ";
-  if (r.bound.roundoff > 0.1 * o.tol)
+  // Blame round-off only when the bound is of the size round-off alone would give.
+  if (r.bound.roundoff > 0.1 * o.tol && r.bound.bound <= 10 * r.bound.roundoff)
     m << "round-off alone allows " << r.bound.roundoff << " at this eps (eps^-1 magnifies the rounding of w - phi); "
       << "use a larger --eps-min or --eps, or a larger --tol";
   else
