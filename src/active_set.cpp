@@ -36,11 +36,6 @@ size_t fingerprint(const NodeSet& s) {
   return h;
 }
 
-int count(const NodeSet& s) {
-  int c = 0;
-  for (char v : s) c += v != 0;
-  return c;
-}
 }  // namespace
 
 double Certificate::worst() const {
@@ -167,7 +162,7 @@ ExactResult solve_exact(const Problem& p, const ExactOptions& o, NodeSet initial
   if (static_cast<int>(A.size()) != nodes) throw std::invalid_argument("initial active set has the wrong size");
   for (int q = 0; q < nodes; ++q)
     if (A[q] && !std::isfinite(p.phi[q])) A[q] = 0;  // no obstacle there: nothing to hold
-  level.predicted = count(A);
+  level.predicted = members(A);
   FixedSetSolver fs(p.K, p.F, p.phi, o.max_correction);
   std::unordered_set<size_t> seen{fingerprint(A)};
   Step s;
@@ -216,7 +211,7 @@ ExactResult solve_exact(const Problem& p, const ExactOptions& o, NodeSet initial
   }
   res.message = m.str();
   res.converged = res.message.empty();
-  level.active = count(res.active);
+  level.active = members(res.active);
   level.factorizations = fs.factorizations();
   level.correction_columns = fs.correction_columns();
   level.seconds = seconds_since(t0);

@@ -2,20 +2,19 @@
 
 #include <cmath>
 
+#include "contraction.hpp"
 #include "stopwatch.hpp"
 
 namespace plate {
 
 SweepRow sweep_row(const Problem& p, Scheme scheme, double eps, double tol, int max_iter, const VectorXd& reference) {
-  SolveOptions o;
-  o.scheme = scheme;
-  o.continuation = false;
-  o.eps_start = eps;
-  o.tol = tol;
-  o.max_iter = max_iter;
+  SolveOptions o = fixed_eps_options(scheme, eps, tol, max_iter);
   SweepRow row;
+  VectorXd last = VectorXd::Zero(p.grid.unknowns());
   o.on_iterate = [&](double, int k, const VectorXd& w) {
     if (k == 1) row.first_step = max_nodal_abs(w);
+    row.steps.push_back(m_norm(p, w - last));
+    last = w;
   };
   const auto t0 = Clock::now();
   const SolveResult r = solve(p, o);
@@ -23,6 +22,7 @@ SweepRow sweep_row(const Problem& p, Scheme scheme, double eps, double tol, int 
   row.scheme = scheme;
   row.eps = eps;
   row.tol = tol;
+  row.stopped = r.stopped;
   row.converged = r.converged;
   row.message = r.message;
   row.iterations = r.total_iterations();

@@ -2,6 +2,7 @@
 // (3a) and (5a) stop giving certified answers as eps -> 0, and why (results/hard_cases.md).
 #pragma once
 #include <string>
+#include <vector>
 
 #include "schemes.hpp"
 
@@ -11,10 +12,12 @@ struct SweepRow {
   VectorXd w;                  // the last iterate
   Scheme scheme = Scheme::Linear;
   double eps = 0, tol = 0;
+  bool stopped = false;        // the stopping rules were met
   bool converged = false;      // stopped and certified by the error bound
   std::string message;         // why not
   int iterations = 0, factorizations = 0;
   double first_step = 0;       // ||w^1 - w^0||_C, from which the linear scheme's count is predicted
+  std::vector<double> steps;   // ||w^{k+1} - w^k||_M, the norm of Theorem 2
   PenaltyBound bound;
   double violation = 0;        // max over samples of (phi - S w)^+
   double error = 0;            // max over nodes |w - reference|

@@ -11,6 +11,13 @@ namespace plate {
 
 using NodeSet = std::vector<char>;  // membership flag per interior node
 
+// How many nodes the set holds.
+inline int members(const NodeSet& s) {
+  int c = 0;
+  for (char v : s) c += v != 0;
+  return c;
+}
+
 class FixedSetSolver {
  public:
   // K, F: stiffness and load; phi: obstacle at the interior nodes. The node of value unknown 4p is p.

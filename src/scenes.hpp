@@ -5,16 +5,41 @@
 #include <vector>
 
 #include "assemble.hpp"
+#include "cholesky.hpp"
 #include "grid.hpp"
+#include "penalty_bound.hpp"
 #include "problem.hpp"
 
 namespace plate {
+
+// The same value everywhere: a uniform load, or a flat support.
+inline Field uniform(double v) {
+  return [v](double, double) { return v; };
+}
+
 
 // Height `top` at the grid node nearest the centre and no constraint elsewhere: nodal sampling
 // sees a single point, so the obstacle acts as a point load.
 inline Field centre_spike(const Grid& g, double top) {
   const double cx = g.x((g.nx + 1) / 2), cy = g.y((g.ny + 1) / 2), half = 0.25 * g.h;
   return [=](double x, double y) { return (std::abs(x - cx) < half && std::abs(y - cy) < half) ? top : -INFINITY; };
+}
+
+// Under f = 1 the free plate (no contact) rises to w_free; an obstacle at the centre node of exactly
+// that height is touched with zero force: complementarity's degenerate case.
+struct JustTouching {
+  Problem free_plate;
+  VectorXd w_free;
+  Problem touching;
+};
+inline JustTouching just_touching(int n) {
+  const Grid g = make_grid(n);
+  JustTouching s{make_problem(g, SamplingKind::Nodes, uniform(-1.0), uniform(1.0)), {}, {}};
+  Cholesky chol;
+  chol.factorize(s.free_plate.K);
+  s.w_free = chol.solve(s.free_plate.F);
+  s.touching = make_problem(g, SamplingKind::Nodes, centre_spike(g, s.w_free[centre_value_dof(g)]), uniform(1.0));
+  return s;
 }
 
 // k x k smooth bumps with tops at height `top` over valleys at `bottom` (< top < 0): under a

@@ -116,6 +116,16 @@ LevelRecord nonlinear_scheme_level(const Problem& p, double eps, VectorXd& w, Ch
 }
 // @end nonlinear-scheme
 
+SolveOptions fixed_eps_options(Scheme scheme, double eps, double tol, int max_iter) {
+  SolveOptions o;
+  o.scheme = scheme;
+  o.continuation = false;
+  o.eps_start = eps;
+  o.tol = tol;
+  o.max_iter = max_iter;
+  return o;
+}
+
 void validate(const SolveOptions& o) {
   auto require = [](bool ok, const std::string& what) {
     if (!ok) throw std::invalid_argument(what);

@@ -61,6 +61,9 @@ LevelRecord nonlinear_scheme_level(const Problem& p, double eps, VectorXd& w, Ch
 // the result says converged = false and why.
 SolveResult solve(const Problem& p, const SolveOptions& o);
 
+// Options for `scheme` at `eps` alone (no continuation), stopping at tol or after max_iter steps.
+SolveOptions fixed_eps_options(Scheme scheme, double eps, double tol, int max_iter = SolveOptions{}.max_iter);
+
 // Throws std::invalid_argument naming the option if an option is out of range.
 void validate(const SolveOptions& o);
 

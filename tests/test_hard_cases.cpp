@@ -20,10 +20,6 @@ double constant(const std::string& key) {
   static const auto numbers = read_paper_numbers(std::string(PLATE_SOURCE_DIR) + "/reference/plate_constants.csv");
   return published(numbers, key);
 }
-Field uniform(double f) {
-  return [f](double, double) { return f; };
-}
-int count(const NodeSet& s) { return static_cast<int>(std::count(s.begin(), s.end(), 1)); }
 }  // namespace
 
 TEST(HardCases, PointObstacleActsAsTheClampedSquaresPointLoad) {
@@ -36,23 +32,20 @@ TEST(HardCases, PointObstacleActsAsTheClampedSquaresPointLoad) {
   const double coefficient = 0.01 / p.sampling.weights.dot(r.lambda);
   std::printf("w_c / P = %.7f (published %.5f)\n", coefficient, constant("point_centre"));
   EXPECT_NEAR(coefficient, constant("point_centre"), constant("point_centre") * 0.01);  // three published digits
-  EXPECT_EQ(count(r.active), 1);
+  EXPECT_EQ(members(r.active), 1);
 }
 
 TEST(HardCases, ObstacleThatJustTouchesTheFreePlateCarriesNoForce) {
   // Under an upward load the free plate's centre rises to w_free; an obstacle of exactly that
   // height at the centre is touched with zero force, the degenerate case of complementarity.
-  const Grid g = make_grid(32);
-  const Problem free_plate = make_problem(g, SamplingKind::Nodes, uniform(-1.0), uniform(1.0));
-  Cholesky chol;
-  chol.factorize(free_plate.K);
-  const VectorXd w_free = chol.solve(free_plate.F);
-  const Problem p = make_problem(g, SamplingKind::Nodes, centre_spike(g, w_free[centre_value_dof(g)]), uniform(1.0));
+  const JustTouching s = just_touching(32);
+  const Problem& p = s.touching;
+  const VectorXd& w_free = s.w_free;
   const ExactResult r = solve_exact(p, ExactOptions{});
   ASSERT_TRUE(r.converged) << r.message;
   EXPECT_LE(r.certificate.worst(), 1e-10);
   EXPECT_LE((r.w - w_free).lpNorm<Eigen::Infinity>(), 1e-12 * w_free.lpNorm<Eigen::Infinity>());
-  EXPECT_LE(p.sampling.weights.dot(r.lambda), 1e-10 * free_plate.F.lpNorm<1>());
+  EXPECT_LE(p.sampling.weights.dot(r.lambda), 1e-10 * s.free_plate.F.lpNorm<1>());
 }
 
 TEST(HardCases, FlatSupportIsTouchedOnAnAreaWhereTheForceEqualsTheLoad) {
@@ -63,14 +56,14 @@ TEST(HardCases, FlatSupportIsTouchedOnAnAreaWhereTheForceEqualsTheLoad) {
   for (double factor : {1.01, 0.99}) {
     const ExactResult r = solve_exact(g32, uniform(-sag * factor), uniform(-q), ExactOptions{});
     ASSERT_TRUE(r.converged) << r.message;
-    EXPECT_EQ(count(r.active) > 0, factor < 1) << "R = " << factor << " x the published sag";
+    EXPECT_EQ(members(r.active) > 0, factor < 1) << "R = " << factor << " x the published sag";
   }
   int touching[2];
   for (int k : {0, 1}) {
     const Grid g = make_grid(64 << k);
     const ExactResult r = solve_exact(g, uniform(-5e-4), uniform(-q), ExactOptions{});  // grid-sequenced
     ASSERT_TRUE(r.converged) << r.message;
-    touching[k] = count(r.active);
+    touching[k] = members(r.active);
     const double centre = r.lambda[g.node(g.nx / 2, g.ny / 2)];
     std::printf("n = %d: %d touching nodes, force density at the centre %.5f (q = %g)\n", g.nx, touching[k], centre, q);
     if (k == 1) EXPECT_NEAR(centre, q, 0.01 * q);

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "active_set.hpp"
+#include "contraction.hpp"
 #include "eps_sweep.hpp"
 #include "paper_case.hpp"
 #include "published.hpp"
@@ -18,7 +19,6 @@ constexpr int kFine = 512;
 double lambda1() {
   return published(read_paper_numbers(std::string(PLATE_SOURCE_DIR) + "/reference/plate_constants.csv"), "lambda1");
 }
-double m_norm(const Problem& p, const VectorXd& v) { return std::sqrt(v.dot(p.M * v)); }
 }  // namespace
 
 TEST(FineGrid, LinearSchemeContractsAtTheRateOfTheFirstEigenvalue) {
@@ -28,19 +28,7 @@ TEST(FineGrid, LinearSchemeContractsAtTheRateOfTheFirstEigenvalue) {
   const Problem p = make_problem(make_grid(kFine), SamplingKind::Nodes, [](double, double) { return -1.0; },
                                  [](double, double) { return 1.0; });
   const double eps = 1e-4;
-  std::vector<double> steps;
-  VectorXd previous = VectorXd::Zero(p.grid.unknowns());
-  SolveOptions o;
-  o.tol = 1e-300;
-  o.max_iter = 40;
-  o.on_iterate = [&](double, int, const VectorXd& w) {
-    steps.push_back(m_norm(p, w - previous));
-    previous = w;
-  };
-  Cholesky chol;
-  chol.analyze(p.K);
-  VectorXd w = VectorXd::Zero(p.grid.unknowns());
-  linear_scheme_level(p, eps, w, chol, o);
+  const std::vector<double> steps = linear_step_norms(p, eps, 40);
   ASSERT_EQ(steps.size(), 40u);
   const double ratio = steps[39] / steps[38], measured = (1 / ratio - 1) / eps;
   std::printf("n = %d: step ratio %.9f, so lambda_1h = %.4f (published lambda_1 = %.5f)\n", kFine, ratio, measured,
@@ -81,24 +69,13 @@ TEST(FineGrid, LinearSchemeOnTheContactProblemStaysWithinTheoremTwo) {
   // (the nodes held by the obstacle make it faster in practice), and the stopped iterate is not w_eps.
   const Problem p = paper_problem(kFine, SamplingKind::Nodes);
   const double eps = 1e-4, tol = 1e-6;
-  std::vector<double> steps;
-  VectorXd previous = VectorXd::Zero(p.grid.unknowns());
-  SolveOptions o;
-  o.scheme = Scheme::Linear;
-  o.continuation = false;
-  o.eps_start = eps;
-  o.tol = tol;
-  o.max_iter = 400;
-  o.on_iterate = [&](double, int, const VectorXd& w) {
-    steps.push_back(m_norm(p, w - previous));
-    previous = w;
-  };
-  const SolveResult r = solve(p, o);
+  const SweepRow r = sweep_row(p, Scheme::Linear, eps, tol, 400, VectorXd::Zero(p.grid.unknowns()));
   ASSERT_TRUE(r.stopped) << r.message;
   const double rho = 1 / (1 + eps * lambda1());
-  for (size_t k = 1; k < steps.size(); ++k) EXPECT_LE(steps[k], steps[k - 1] * rho * (1 + 1e-6)) << "step " << k;
+  for (size_t k = 1; k < r.steps.size(); ++k)
+    EXPECT_LE(r.steps[k], r.steps[k - 1] * rho * (1 + 1e-6)) << "step " << k;
   std::printf("(5a) at eps = %g: %d steps (contraction bound %.4f), error bound %.2e against tol %.0e\n", eps,
-              r.total_iterations(), rho, r.bound.bound, tol);
+              r.iterations, rho, r.bound.bound, tol);
   // Stopped on a step below tol, but |w - w_eps| can be up to rho / (1 - rho) ~ 7.7 steps: not certified.
   EXPECT_FALSE(r.converged);
   EXPECT_NE(r.message.find("stopped before it solved (2a)"), std::string::npos) << r.message;

@@ -14,16 +14,9 @@ TEST(PenaltyBound, HoldsAndIsWithinAFactorOfTheTrueErrorAlongTheLinearScheme) {
   for (SamplingKind kind : {SamplingKind::Gauss, SamplingKind::Nodes}) {
     const Problem p = paper_problem(8, kind);
     const double eps = 1e-5;  // contraction 1/(1 + eps lambda_1h) ~ 0.987: slow, errors stay visible
-    SolveOptions o;
-    o.scheme = Scheme::Nonlinear;
-    o.continuation = false;
-    o.eps_start = eps;
-    o.tol = 1e-14;
-    const VectorXd w_eps = solve(p, o).w;  // (3a) solves each active set exactly
+    const VectorXd w_eps = solve(p, fixed_eps_options(Scheme::Nonlinear, eps, 1e-14)).w;  // exact per active set
     std::vector<VectorXd> iterates;
-    o.scheme = Scheme::Linear;
-    o.max_iter = 200;
-    o.tol = 1e-300;  // run all 200 steps
+    SolveOptions o = fixed_eps_options(Scheme::Linear, eps, 1e-300, 200);  // run all 200 steps
     o.on_iterate = [&](double, int k, const VectorXd& w) {
       if (k == 2 || k == 10 || k == 50 || k == 200) iterates.push_back(w);
     };

@@ -13,13 +13,7 @@ using namespace plate;
 
 namespace {
 SolveResult at_eps(const Problem& p, Scheme s, double eps, double tol = 1e-14, int max_iter = 100000) {
-  SolveOptions o;
-  o.scheme = s;
-  o.continuation = false;
-  o.eps_start = eps;
-  o.tol = tol;
-  o.max_iter = max_iter;
-  return solve(p, o);
+  return solve(p, fixed_eps_options(s, eps, tol, max_iter));
 }
 double violation(const Problem& p, const VectorXd& w) { return (p.phi - p.sampling.S * w).cwiseMax(0.0).maxCoeff(); }
 }  // namespace

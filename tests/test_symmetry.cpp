@@ -9,12 +9,8 @@ using namespace plate;
 
 namespace {
 VectorXd penalised(const Problem& p, double eps = 1e-6) {
-  SolveOptions o;
-  o.scheme = Scheme::Nonlinear;
-  o.continuation = false;
-  o.eps_start = eps;
-  o.tol = 1e-15;  // below what the error bound can certify: we want the steps to stop changing w at all
-  const SolveResult r = solve(p, o);
+  // tol below what the error bound can certify: we want the steps to stop changing w at all.
+  const SolveResult r = solve(p, fixed_eps_options(Scheme::Nonlinear, eps, 1e-15));
   EXPECT_TRUE(r.stopped) << r.message;
   return r.w;
 }
