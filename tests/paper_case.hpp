@@ -5,11 +5,18 @@
 #include <utility>
 
 #include "fields.hpp"
+#include "published.hpp"
 #include "problem.hpp"
 
 namespace plate {
 inline Problem paper_problem(int n, SamplingKind kind, double R = 0.0625) {
   return make_problem(make_grid(n), kind, cylinder(0.5, 0.5, 0.25, R), [](double, double) { return 0.0; });
+}
+
+// A published constant of the clamped plate, from reference/plate_constants.csv.
+inline double plate_constant(const std::string& key) {
+  static const auto numbers = read_paper_numbers(std::string(PLATE_SOURCE_DIR) + "/reference/plate_constants.csv");
+  return published(numbers, key);
 }
 
 // Largest asymmetry of the nodal values over the eight symmetries of the n x n grid.

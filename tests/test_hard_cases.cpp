@@ -10,17 +10,9 @@
 #include "eps_sweep.hpp"
 #include "fields.hpp"
 #include "paper_case.hpp"
-#include "published.hpp"
 #include "scenes.hpp"
 
 using namespace plate;
-
-namespace {
-double constant(const std::string& key) {
-  static const auto numbers = read_paper_numbers(std::string(PLATE_SOURCE_DIR) + "/reference/plate_constants.csv");
-  return published(numbers, key);
-}
-}  // namespace
 
 TEST(HardCases, PointObstacleActsAsTheClampedSquaresPointLoad) {
   // A plate lifted at its centre only is a clamped square under a central point load P, the
@@ -30,8 +22,8 @@ TEST(HardCases, PointObstacleActsAsTheClampedSquaresPointLoad) {
   const ExactResult r = solve_exact(p, ExactOptions{});
   ASSERT_TRUE(r.converged) << r.message;
   const double coefficient = 0.01 / p.sampling.weights.dot(r.lambda);
-  std::printf("w_c / P = %.7f (published %.5f)\n", coefficient, constant("point_centre"));
-  EXPECT_NEAR(coefficient, constant("point_centre"), constant("point_centre") * 0.01);  // three published digits
+  std::printf("w_c / P = %.7f (published %.5f)\n", coefficient, plate_constant("point_centre"));
+  EXPECT_NEAR(coefficient, plate_constant("point_centre"), plate_constant("point_centre") * 0.01);  // three published digits
   EXPECT_EQ(members(r.active), 1);
 }
 
@@ -51,7 +43,7 @@ TEST(HardCases, ObstacleThatJustTouchesTheFreePlateCarriesNoForce) {
 TEST(HardCases, FlatSupportIsTouchedOnAnAreaWhereTheForceEqualsTheLoad) {
   // f = -q onto phi = -R. Contact starts when R falls below the free plate's sag 0.00126532 q;
   // inside the contact area w = -R, so Lap^2 w = 0 and the force density there equals q.
-  const double q = 1.0, sag = constant("uniform_centre") * q;
+  const double q = 1.0, sag = plate_constant("uniform_centre") * q;
   const Grid g32 = make_grid(32);
   for (double factor : {1.01, 0.99}) {
     const ExactResult r = solve_exact(g32, uniform(-sag * factor), uniform(-q), ExactOptions{});
@@ -96,7 +88,7 @@ TEST(HardCases, EveryEpsGivesACertifiedAnswerOrSaysWhyNot) {
   const Problem p = paper_problem(16, SamplingKind::Nodes);
   const ExactResult exact = solve_exact(p, ExactOptions{});
   ASSERT_TRUE(exact.converged);
-  const double tol = 1e-8, lambda1 = constant("lambda1");
+  const double tol = 1e-8, lambda1 = plate_constant("lambda1");
   // The penalty error is linear in eps: its constant, from a certified run where it dominates.
   const SweepRow mid = sweep_row(p, Scheme::Nonlinear, 1e-8, tol, 100, exact.w);
   ASSERT_TRUE(mid.converged) << mid.message;

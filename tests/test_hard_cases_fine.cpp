@@ -10,15 +10,11 @@
 #include "contraction.hpp"
 #include "eps_sweep.hpp"
 #include "paper_case.hpp"
-#include "published.hpp"
 
 using namespace plate;
 
 namespace {
 constexpr int kFine = 512;
-double lambda1() {
-  return published(read_paper_numbers(std::string(PLATE_SOURCE_DIR) + "/reference/plate_constants.csv"), "lambda1");
-}
 }  // namespace
 
 TEST(FineGrid, LinearSchemeContractsAtTheRateOfTheFirstEigenvalue) {
@@ -32,9 +28,9 @@ TEST(FineGrid, LinearSchemeContractsAtTheRateOfTheFirstEigenvalue) {
   ASSERT_EQ(steps.size(), 40u);
   const double ratio = steps[39] / steps[38], measured = (1 / ratio - 1) / eps;
   std::printf("n = %d: step ratio %.9f, so lambda_1h = %.4f (published lambda_1 = %.5f)\n", kFine, ratio, measured,
-              lambda1());
-  for (size_t k = 1; k < steps.size(); ++k) EXPECT_LE(steps[k], steps[k - 1] / (1 + eps * lambda1()) * (1 + 1e-6));
-  EXPECT_NEAR(measured, lambda1(), 1e-5 * lambda1());
+              plate_constant("lambda1"));
+  for (size_t k = 1; k < steps.size(); ++k) EXPECT_LE(steps[k], steps[k - 1] / (1 + eps * plate_constant("lambda1")) * (1 + 1e-6));
+  EXPECT_NEAR(measured, plate_constant("lambda1"), 1e-5 * plate_constant("lambda1"));
 }
 
 TEST(FineGrid, ExactSolverCertifiesAMillionUnknowns) {
@@ -71,7 +67,7 @@ TEST(FineGrid, LinearSchemeOnTheContactProblemStaysWithinTheoremTwo) {
   const double eps = 1e-4, tol = 1e-6;
   const SweepRow r = sweep_row(p, Scheme::Linear, eps, tol, 400, VectorXd::Zero(p.grid.unknowns()));
   ASSERT_TRUE(r.stopped) << r.message;
-  const double rho = 1 / (1 + eps * lambda1());
+  const double rho = 1 / (1 + eps * plate_constant("lambda1"));
   for (size_t k = 1; k < r.steps.size(); ++k)
     EXPECT_LE(r.steps[k], r.steps[k - 1] * rho * (1 + 1e-6)) << "step " << k;
   std::printf("(5a) at eps = %g: %d steps (contraction bound %.4f), error bound %.2e against tol %.0e\n", eps,
