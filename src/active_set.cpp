@@ -2,12 +2,14 @@
 // certificate, and the sequence of grids that gives it a good start.
 #include "active_set.hpp"
 
+#include <cfloat>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_set>
 
 #include "contact.hpp"
+#include "dual_active_set.hpp"
 #include "schemes.hpp"
 #include "stopwatch.hpp"
 
@@ -46,27 +48,46 @@ double Certificate::worst() const {
 Certificate certify(const Problem& p, const VectorXd& w, const VectorXd& lambda) {
   Certificate c;
   const double wmax = value_scale(w), lmax = force_scale(lambda);
+  const VectorXd Sw = p.sampling.S * w;
   for (int q = 0; q < p.phi.size(); ++q) {
-    const double gap = w[4 * q] - p.phi[q];  // +inf where there is no obstacle
+    const double gap = Sw[q] - p.phi[q];  // +inf where there is no obstacle
     c.violation = std::max(c.violation, -gap / wmax);
     c.negative_multiplier = std::max(c.negative_multiplier, -lambda[q] / lmax);
     if (lambda[q] != 0) c.complementarity = std::max(c.complementarity, std::abs(lambda[q] * gap) / (lmax * wmax));
   }
   // Componentwise backward error (Oettli-Prager): the smallest relative change of K, F and the
   // contact forces that makes w exact. A normwise residual would demand the impossible of a matrix
-  // whose condition number grows like h^-4.
+  // whose condition number grows like h^-4. Where every term of a row is itself round-off (a slope
+  // that symmetry makes zero), we add ||K_i||_inf ||w||_inf to that row's scale, as Arioli, Demmel
+  // and Duff do for sparse systems (SIAM J. Matrix Anal. Appl. 10, 1989).
   const VectorXd force = p.sampling.S.transpose() * p.sampling.weights.cwiseProduct(lambda);
-  VectorXd r = -p.F - force, scale = p.F.cwiseAbs() + force.cwiseAbs();
+  VectorXd r = -p.F - force, scale = p.F.cwiseAbs() + force.cwiseAbs(), row_max = VectorXd::Zero(r.size());
+  VectorXd row_terms = VectorXd::Zero(r.size());
   for (Eigen::Index col = 0; col < p.K.outerSize(); ++col)
     for (SpMat::InnerIterator it(p.K, col); it; ++it) {
       r[it.row()] += it.value() * w[col];
       scale[it.row()] += std::abs(it.value() * w[col]);
+      row_max[it.row()] = std::max(row_max[it.row()], std::abs(it.value()));
+      row_terms[it.row()] += 1;
     }
-  for (Eigen::Index i = 0; i < r.size(); ++i)
-    if (scale[i] > 0) c.stationarity = std::max(c.stationarity, std::abs(r[i]) / scale[i]);
+  const double w_inf = w.size() ? w.cwiseAbs().maxCoeff() : 0.0;
+  for (Eigen::Index i = 0; i < r.size(); ++i) {
+    const double normwise = row_max[i] * w_inf;
+    double s = scale[i];
+    if (s <= 1000 * row_terms[i] * DBL_EPSILON * normwise) s += normwise;
+    if (s > 0) c.stationarity = std::max(c.stationarity, std::abs(r[i]) / s);
+  }
   return c;
 }
 // @end certificate
+
+std::string certificate_failure(const Certificate& c, double tol) {
+  std::ostringstream m;
+  m << "the active set settled but the certificate fails: worst relative residual " << c.worst() << " > tol = " << tol
+    << " (violation " << c.violation << ", negative multiplier " << c.negative_multiplier << ", complementarity "
+    << c.complementarity << ", stationarity " << c.stationarity << ")";
+  return m.str();
+}
 
 double energy(const Problem& p, const VectorXd& w) { return 0.5 * w.dot(p.K * w) - p.F.dot(w); }
 
@@ -148,11 +169,8 @@ bool primal_active_set(const Problem& p, FixedSetSolver& fs, NodeSet& W, Step& s
 
 ExactResult solve_exact(const Problem& p, const ExactOptions& o, NodeSet initial) {
   validate(o);
-  if (p.sampling.kind != SamplingKind::Nodes)
-    throw std::invalid_argument(
-        "the exact-constraint solver needs --sampling nodes: at Gauss points the constraints are general rows "
-        "of S, and where the contact is an area the active rows outnumber the unknowns they touch, which leaves "
-        "the multipliers undetermined (use a penalty scheme)");
+  // Rows that are not bounds on nodal values go to the dual solver.
+  if (!p.sampling.nodal_bounds()) return solve_exact_rows(p, o, initial);
   const auto t0 = Clock::now();
   const int nodes = static_cast<int>(p.phi.size());
   ExactResult res;
@@ -204,10 +222,7 @@ ExactResult solve_exact(const Problem& p, const ExactOptions& o, NodeSet initial
     else
       m << "the active-set iterations did not finish in max-iter = " << o.max_iter << " steps";
   } else if (res.certificate.worst() > o.tol) {
-    m << "the active set settled but the certificate fails: worst relative residual " << res.certificate.worst()
-      << " > tol = " << o.tol << " (violation " << res.certificate.violation << ", negative multiplier "
-      << res.certificate.negative_multiplier << ", complementarity " << res.certificate.complementarity
-      << ", stationarity " << res.certificate.stationarity << ")";
+    m << certificate_failure(res.certificate, o.tol);
   }
   res.message = m.str();
   res.converged = res.message.empty();
@@ -221,14 +236,15 @@ ExactResult solve_exact(const Problem& p, const ExactOptions& o, NodeSet initial
 
 namespace {
 // @region grid-sequencing
-// A fine node starts held if the coarse solution, interpolated by its own Hermite cubics, lies on
-// or below phi there: a coarse contact line predicts the fine one to within a cell.
-NodeSet predict_active(const Grid& coarse, const VectorXd& wc, const Problem& fine) {
+// A fine sample starts held if the coarse solution, interpolated by its own Hermite cubics, lies on
+// or below phi there: a coarse contact line predicts the fine one to within a cell. (`margin`
+// also takes samples just above: the dual solver gives those a column of G, which costs little.)
+NodeSet predict_active(const Grid& coarse, const VectorXd& wc, const Problem& fine, double margin) {
   NodeSet A(fine.phi.size(), 0);
   for (int q = 0; q < fine.phi.size(); ++q) {
     if (!std::isfinite(fine.phi[q])) continue;
     const double w = evaluate(coarse, wc, fine.sampling.x[q], fine.sampling.y[q]).w;
-    A[q] = w <= fine.phi[q];
+    A[q] = w <= fine.phi[q] + margin;
   }
   return A;
 }
@@ -243,12 +259,13 @@ ExactResult solve_exact(const Problem& p, const Field& obstacle, const Field& lo
   VectorXd wc;
   if (o.nested && g.nx % 2 == 0 && g.ny % 2 == 0 && g.nx / 2 >= o.coarsest) {
     coarse = make_grid(g.nx / 2, g.lx(), g.ly());
-    ExactResult rc = solve_exact(coarse, obstacle, load, o);
+    ExactResult rc = solve_exact(coarse, p.spec, obstacle, load, o);
     coarse_levels = rc.levels;
     wc = std::move(rc.w);  // even an uncertified coarse answer predicts the contact set well
   }
   const auto t0 = Clock::now();
-  NodeSet initial = wc.size() ? predict_active(coarse, wc, p) : NodeSet{};
+  const double margin = p.sampling.nodal_bounds() || !wc.size() ? 0.0 : 1e-4 * max_nodal_abs(wc);
+  NodeSet initial = wc.size() ? predict_active(coarse, wc, p, margin) : NodeSet{};
   const double seconds_predict = seconds_since(t0);
   ExactResult r = solve_exact(p, o, std::move(initial));
   r.levels.back().seconds += seconds_predict;
@@ -257,8 +274,13 @@ ExactResult solve_exact(const Problem& p, const Field& obstacle, const Field& lo
 }
 
 ExactResult solve_exact(const Grid& g, const Field& obstacle, const Field& load, const ExactOptions& o) {
+  return solve_exact(g, SamplingSpec{}, obstacle, load, o);
+}
+
+ExactResult solve_exact(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load,
+                        const ExactOptions& o) {
   const auto t0 = Clock::now();
-  const Problem p = make_problem(g, SamplingKind::Nodes, obstacle, load);
+  const Problem p = make_problem(g, spec, obstacle, load);
   const double seconds_assemble = seconds_since(t0);
   ExactResult r = solve_exact(p, obstacle, load, o);
   r.levels.back().seconds += seconds_assemble;

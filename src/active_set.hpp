@@ -1,6 +1,8 @@
-// The obstacle problem with the constraint imposed exactly, no eps: with nodal sampling, find w and
-// nodal forces lambda with  K w - F = S^T W lambda,  lambda >= 0,  w_p >= phi_p,  lambda_p (w_p - phi_p) = 0.
-// Primal-dual active sets (semismooth Newton), a monotone fallback that cannot cycle, grid sequencing.
+// The obstacle problem with the constraint imposed exactly, no eps: find w and forces lambda at the
+// samples with  K w - F = S^T W lambda,  lambda >= 0,  (S w)_p >= phi_p,  lambda_p ((S w)_p - phi_p) = 0.
+// Nodal sampling (bounds on nodal values): primal-dual active sets (semismooth Newton) and a monotone
+// fallback that cannot cycle. Any other sampling: the dual active-set method of dual_active_set.hpp.
+// Both with grid sequencing.
 #pragma once
 #include <string>
 #include <vector>
@@ -13,13 +15,15 @@ namespace plate {
 
 // How far (w, lambda) is from solving the complementarity problem; each entry is relative.
 struct Certificate {
-  double violation = 0;            // max_p (phi_p - w_p)_+ / max_p |w_p|
+  double violation = 0;            // max_p (phi_p - (S w)_p)_+ / max over nodes |w|
   double negative_multiplier = 0;  // max_p (-lambda_p)_+ / max_p |lambda_p|
   double complementarity = 0;      // max_p |lambda_p (w_p - phi_p)| / (max |lambda| max |w|)
   double stationarity = 0;         // max_i |K w - F - S^T W lambda|_i / (|K| |w| + |F| + |S^T W lambda|)_i
   double worst() const;
 };
 Certificate certify(const Problem& p, const VectorXd& w, const VectorXd& lambda);
+// Why a certificate fails tol, entry by entry.
+std::string certificate_failure(const Certificate& c, double tol);
 
 struct ExactOptions {
   double tol = 1e-10;       // every certificate entry must end <= tol
@@ -35,7 +39,9 @@ struct ExactLevel {
   int cells = 0;
   int predicted = 0;           // size of the starting active set
   int active = 0;              // size of the final active set
-  int pdas_iterations = 0;     // primal-dual active-set iterations
+  int pdas_iterations = 0;     // primal-dual active-set iterations (dual solver: rounds of candidate rows)
+  int dual_steps = 0;          // dual solver: steps of the dual active-set method
+  int dependent_rows = 0;      // dual solver: rows met that depended on the held ones
   int primal_steps = 0;        // steps of the monotone fallback (0 unless it was needed)
   int factorizations = 0;
   long correction_columns = 0; // solves spent on small active-set changes
@@ -54,13 +60,15 @@ struct ExactResult {
   std::vector<ExactLevel> levels;         // coarsest first; the last is this grid
 };
 
-// One grid, from the starting active set `initial` (empty: no node held).
+// One grid, from the starting active set `initial` (one flag per sample row; empty: none).
 ExactResult solve_exact(const Problem& p, const ExactOptions& o, NodeSet initial = {});
 
 // Grid sequencing: solve on the grid with nx / 2 cells first (while nx is even and above
 // o.coarsest) and start from the active set its solution predicts.
-ExactResult solve_exact(const Grid& g, const Field& obstacle, const Field& load, const ExactOptions& o);
-// The same on a problem already assembled (from the same obstacle and load, nodal sampling).
+ExactResult solve_exact(const Grid& g, const Field& obstacle, const Field& load, const ExactOptions& o);  // nodes
+ExactResult solve_exact(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load,
+                        const ExactOptions& o);
+// The same on a problem already assembled (from the same obstacle and load, sampled as p.spec says).
 ExactResult solve_exact(const Problem& p, const Field& obstacle, const Field& load, const ExactOptions& o);
 
 // 1/2 w^T K w - F^T w.

@@ -1,6 +1,7 @@
 // Assembling a Problem and validating its data before any solve.
 #include "problem.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -34,12 +35,36 @@ void check_obstacle_on_boundary(const Grid& g, const Field& obstacle) {
   }
 }
 
+namespace {
+// @region edge-envelope
+// The obstacle on its own edge: the largest value on either side of the curve. The cylinder is
+// discontinuous exactly there, and the constraint a rigid body imposes is its upper
+// semicontinuous envelope (the closed disk), whatever side rounding puts the point on.
+double on_edge(const Field& obstacle, const EdgePoints& e, int k, double h) {
+  const double d = 1e-9 * h;
+  double v = obstacle(e.x[k], e.y[k]);
+  for (double side : {-1.0, 1.0}) {
+    const double u = obstacle(e.x[k] + side * d * e.nx[k], e.y[k] + side * d * e.ny[k]);
+    if (std::isnan(u)) return u;
+    v = std::max(v, u);
+  }
+  return v;
+}
+// @end edge-envelope
+}  // namespace
+
 Problem make_problem(const Grid& g, SamplingKind kind, const Field& obstacle, const Field& load) {
+  return make_problem(g, SamplingSpec{kind, {}}, obstacle, load);
+}
+
+Problem make_problem(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load) {
   check_obstacle_on_boundary(g, obstacle);
-  Problem p{g, make_sampling(g, kind), {}, {}, {}, {}};
+  // Without an edge curve the edge kinds keep their interior samples alone.
+  Problem p{g, make_sampling(g, spec.kind, spec.edge), {}, {}, {}, {}, spec};
   p.phi.resize(p.sampling.size());
   for (int i = 0; i < p.sampling.size(); ++i) {
-    const double v = obstacle(p.sampling.x[i], p.sampling.y[i]);
+    const int k = i - p.sampling.edge_begin;
+    const double v = k >= 0 ? on_edge(obstacle, p.sampling.edge, k, g.h) : obstacle(p.sampling.x[i], p.sampling.y[i]);
     if (std::isnan(v) || v == INFINITY) {
       std::ostringstream m;
       m << "obstacle must be a number or -inf (no constraint), but phi(" << p.sampling.x[i] << ", "

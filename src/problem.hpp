@@ -6,6 +6,12 @@
 
 namespace plate {
 
+// Which sampling, and for the Edge kinds the obstacle's edge curve.
+struct SamplingSpec {
+  SamplingKind kind = SamplingKind::Nodes;
+  EdgeCurve edge;
+};
+
 struct Problem {
   Grid grid;
   Sampling sampling;
@@ -13,10 +19,13 @@ struct Problem {
   SpMat K;       // (Lap u, Lap v)
   SpMat M;       // S^T W S
   VectorXd F;    // (f, u)
+  SamplingSpec spec;  // how `sampling` was made, so a coarser grid can be sampled alike
 };
 
 // Throws std::invalid_argument (naming "obstacle" or "load") for NaN or +inf values, and for an
 // obstacle that is not below zero on the boundary (then no clamped plate can satisfy w >= phi).
+Problem make_problem(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load);
+// The same without an edge curve.
 Problem make_problem(const Grid& g, SamplingKind kind, const Field& obstacle, const Field& load);
 
 // Samples phi along the boundary (every node and 8 points per cell edge) and throws

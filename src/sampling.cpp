@@ -2,6 +2,7 @@
 #include "sampling.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <utility>
 
 #include "assemble.hpp"
@@ -10,14 +11,27 @@
 
 namespace plate {
 
-const char* to_string(SamplingKind kind) { return kind == SamplingKind::Gauss ? "gauss" : "nodes"; }
+const char* to_string(SamplingKind kind) {
+  switch (kind) {
+    case SamplingKind::Gauss: return "gauss";
+    case SamplingKind::Nodes: return "nodes";
+    case SamplingKind::Edge: return "edge";
+    default: return "edge-gauss";
+  }
+}
+
+SamplingKind sampling_kind(const std::string& name) {
+  for (SamplingKind k : {SamplingKind::Gauss, SamplingKind::Nodes, SamplingKind::Edge, SamplingKind::EdgeGauss})
+    if (name == to_string(k)) return k;
+  throw std::invalid_argument("--sampling must be gauss, nodes, edge or edge-gauss, got '" + name + "'");
+}
 
 namespace {
 
 Sampling gauss_points(const Grid& g) {
   const Quadrature1D q = gauss_legendre(4);
   const int per = 16, npts = g.elements() * per;
-  Sampling s{SamplingKind::Gauss, {}, {}, VectorXd(npts), RowSpMat(npts, g.unknowns())};
+  Sampling s{SamplingKind::Gauss, {}, {}, VectorXd(npts), RowSpMat(npts, g.unknowns()), 0, {}};
   s.x.reserve(npts);
   s.y.reserve(npts);
   s.S.reserve(static_cast<Eigen::Index>(npts) * 16);
@@ -47,7 +61,7 @@ Sampling gauss_points(const Grid& g) {
 // @region nodal-sampling
 Sampling grid_nodes(const Grid& g) {
   const int npts = g.interior_nodes();
-  Sampling s{SamplingKind::Nodes, {}, {}, VectorXd::Constant(npts, g.h * g.h), RowSpMat(npts, g.unknowns())};
+  Sampling s{SamplingKind::Nodes, {}, {}, VectorXd::Constant(npts, g.h * g.h), RowSpMat(npts, g.unknowns()), 0, {}};
   s.S.reserve(npts);
   for (int j = 1; j < g.ny; ++j)
     for (int i = 1; i < g.nx; ++i) {
@@ -62,10 +76,81 @@ Sampling grid_nodes(const Grid& g) {
 }
 // @end nodal-sampling
 
+// @region edge-sampling
+// Appends one row per edge point: the values of the element's 16 basis functions there, so that
+// (S w)_p = w_h(x_p) exactly. A point on an element side may use either element (w_h is C^1).
+void append_edge(const Grid& g, const EdgePoints& e, Sampling& s) {
+  const int first = s.size(), npts = first + e.size();
+  RowSpMat S(npts, g.unknowns());
+  S.reserve(static_cast<Eigen::Index>(s.S.nonZeros()) + 16L * e.size());
+  for (int p = 0; p < first; ++p) {
+    S.startVec(p);
+    for (RowSpMat::InnerIterator it(s.S, p); it; ++it) S.insertBack(p, it.col()) = it.value();
+  }
+  VectorXd weights(npts);
+  weights.head(first) = s.weights;
+  std::vector<std::pair<int, double>> row;
+  for (int k = 0; k < e.size(); ++k) {
+    int ex, ey;
+    double t, u;
+    if (!g.locate(e.x[k], e.y[k], ex, ey, t, u))
+      throw std::invalid_argument("--edge: the point (" + std::to_string(e.x[k]) + ", " + std::to_string(e.y[k]) +
+                                  ") of the obstacle's edge is outside the plate");
+    const auto dofs = g.element_dofs(ex, ey);
+    const Vector16 v = bfs_basis(t, u, g.h).v;
+    row.clear();
+    for (int j = 0; j < 16; ++j)
+      if (dofs[j] >= 0) row.emplace_back(dofs[j], v[j]);
+    std::sort(row.begin(), row.end());
+    S.startVec(first + k);
+    for (const auto& [col, val] : row) S.insertBack(first + k, col) = val;
+    weights[first + k] = e.weight[k];
+    s.x.push_back(e.x[k]);
+    s.y.push_back(e.y[k]);
+  }
+  S.finalize();
+  s.S = std::move(S);
+  s.weights = std::move(weights);
+  s.edge_begin = first;
+  s.edge = e;
+}
+// @end edge-sampling
+
+// Keeps the rows whose point is farther than `distance` from the curve.
+void drop_rows_on(const EdgeCurve& e, double distance, Sampling& s) {
+  std::vector<int> keep;
+  for (int p = 0; p < s.size(); ++p)
+    if (!(distance_to_edge(e, s.x[p], s.y[p]) <= distance)) keep.push_back(p);
+  if (static_cast<int>(keep.size()) == s.size()) return;
+  RowSpMat S(static_cast<Eigen::Index>(keep.size()), s.S.cols());
+  VectorXd weights(keep.size());
+  std::vector<double> x, y;
+  for (size_t k = 0; k < keep.size(); ++k) {
+    S.startVec(static_cast<Eigen::Index>(k));
+    for (RowSpMat::InnerIterator it(s.S, keep[k]); it; ++it) S.insertBack(static_cast<Eigen::Index>(k), it.col()) = it.value();
+    weights[k] = s.weights[keep[k]];
+    x.push_back(s.x[keep[k]]);
+    y.push_back(s.y[keep[k]]);
+  }
+  S.finalize();
+  s.S = std::move(S);
+  s.weights = std::move(weights);
+  s.x = std::move(x);
+  s.y = std::move(y);
+}
+
 }  // namespace
 
-Sampling make_sampling(const Grid& g, SamplingKind kind) {
-  return kind == SamplingKind::Gauss ? gauss_points(g) : grid_nodes(g);
+Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge) {
+  const bool gauss = kind == SamplingKind::Gauss || kind == SamplingKind::EdgeGauss;
+  Sampling s = gauss ? gauss_points(g) : grid_nodes(g);
+  s.kind = kind;
+  if (has_edge(kind) && !edge.empty()) {
+    drop_rows_on(edge, 1e-9 * g.h, s);
+    append_edge(g, edge_points(edge, g.h), s);
+  }
+  s.edge_begin = s.size() - s.edge.size();
+  return s;
 }
 
 SpMat weighted_gram(const RowSpMat& S, const VectorXd& d, int unknowns) {
@@ -81,8 +166,13 @@ SpMat weighted_gram(const RowSpMat& S, const VectorXd& d, int unknowns) {
 }
 
 SpMat sampling_mass(const Grid& g, const Sampling& s) {
-  if (s.kind == SamplingKind::Gauss) return assemble_matrix(g, bfs_mass(g.h));
-  return weighted_gram(s.S, s.weights, g.unknowns());
+  if (s.kind == SamplingKind::Nodes || s.kind == SamplingKind::Edge) return weighted_gram(s.S, s.weights, g.unknowns());
+  // The Gauss rows by stencil, the edge rows (if any) by their Gram matrix.
+  VectorXd edge_only = s.weights;
+  edge_only.head(s.edge_begin).setZero();
+  SpMat M = assemble_matrix(g, bfs_mass(g.h));
+  if (s.edge_size() > 0) M += weighted_gram(s.S, edge_only, g.unknowns());
+  return M;
 }
 
 }  // namespace plate

@@ -5,26 +5,42 @@
 #include <string>
 #include <vector>
 
+#include "edge.hpp"
 #include "grid.hpp"
 #include "sparse.hpp"
 
 namespace plate {
 
 enum class SamplingKind {
-  Gauss,  // 4 x 4 Gauss points per element with their weights: (8) with the L2 product, exactly
-  Nodes,  // interior grid nodes with weight h^2: the trapezoid rule, constraints on nodal values
+  Gauss,      // 4 x 4 Gauss points per element with their weights: (8) with the L2 product, exactly
+  Nodes,      // interior grid nodes with weight h^2: the trapezoid rule, constraints on nodal values
+  Edge,       // the interior nodes, and points on the obstacle's edge weighted by arc length
+  EdgeGauss,  // the Gauss points, and the edge points
 };
 
+// Rows [0, edge_begin) are the interior samples (area weights: W_p is an area); rows from
+// edge_begin on lie on the obstacle's edge (W_p is a length, so a multiplier there is a force per
+// unit length: the line load of (9) on the circle (10)).
 struct Sampling {
   SamplingKind kind;
   std::vector<double> x, y;  // the points
   VectorXd weights;          // W_p > 0
   RowSpMat S;                // points x unknowns
+  int edge_begin = 0;
+  EdgePoints edge;           // the edge rows' points, normals and angles
   int size() const { return static_cast<int>(x.size()); }
+  int edge_size() const { return size() - edge_begin; }
+  // Whether every row is a bound on one nodal value (row q on interior node q).
+  bool nodal_bounds() const { return edge_size() == 0 && (kind == SamplingKind::Nodes || kind == SamplingKind::Edge); }
 };
 
-Sampling make_sampling(const Grid& g, SamplingKind kind);
+// `edge` is used by the Edge kinds only: they sample it, and drop the interior samples that lie
+// on it (a node on the circle would repeat an edge point, or stand for the line as an area).
+Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge = {});
 const char* to_string(SamplingKind kind);
+// The sampling named by to_string; throws std::invalid_argument naming --sampling otherwise.
+SamplingKind sampling_kind(const std::string& name);
+inline bool has_edge(SamplingKind k) { return k == SamplingKind::Edge || k == SamplingKind::EdgeGauss; }
 
 // S^T diag(d) S, visiting only the points with d_p != 0 (the active ones, in the schemes).
 SpMat weighted_gram(const RowSpMat& S, const VectorXd& d, int unknowns);

@@ -71,6 +71,39 @@ std::string nodal_csv(const NodalFields& f) {
   return o.str();
 }
 
+std::string line_force_csv(const Problem& p, const LineForce& f) {
+  std::ostringstream o;
+  o << "# plate: the contact force per unit length q at the points on the obstacle's edge (theta: angle about\n"
+       "# the circle's centre, empty for a polygon), and the weight (arc length) each point stands for\n"
+       "theta,x,y,weight,q\n";
+  for (size_t k = 0; k < f.q.size(); ++k) {
+    const int row = p.sampling.edge_begin + static_cast<int>(k);
+    o << (f.theta.empty() ? std::string() : csv_num(f.theta[k])) << ',' << csv_num(p.sampling.x[row]) << ','
+      << csv_num(p.sampling.y[row]) << ',' << csv_num(p.sampling.weights[row]) << ',' << csv_num(f.q[k]) << '\n';
+  }
+  return o.str();
+}
+
+namespace {
+std::string line_force_json(const Report& r) {
+  const LineForce& f = r.line;
+  if (f.empty()) return "  \"line_force\": null,\n";
+  std::ostringstream o;
+  o << "  \"line_force\": {\"points\": " << f.q.size() << ", \"length\": " << num(f.length) << ", \"total\": "
+    << num(f.total) << ", \"mean\": " << num(f.mean) << ", \"min\": " << num(f.min) << ", \"max\": " << num(f.max);
+  if (!f.theta.empty())
+    o << ", \"q_theta_0\": " << num(line_force_at(f, 0)) << ", \"q_theta_pi_4\": " << num(line_force_at(f, M_PI / 4));
+  o << ",\n    \"fourier_cos_4k_theta\": [";
+  for (size_t k = 0; k < f.fourier.size(); ++k) o << (k ? ", " : "") << num(f.fourier[k]);
+  o << "],\n    \"theta\": [";
+  for (size_t k = 0; k < f.theta.size(); ++k) o << (k ? ", " : "") << num(f.theta[k]);
+  o << "],\n    \"q\": [";
+  for (size_t k = 0; k < f.q.size(); ++k) o << (k ? ", " : "") << num(f.q[k]);
+  o << "]},\n";
+  return o.str();
+}
+}  // namespace
+
 std::string summary_json(const Report& r) {
   const Problem& p = *r.problem;
   const SolveResult& s = *r.result;
@@ -109,6 +142,7 @@ std::string summary_json(const Report& r) {
   o << "  \"max_xi_samples\": " << num(xi.size() ? xi.maxCoeff() : 0.0) << ",\n";
   o << "  \"max_xi_nodes\": " << num(e.max_xi) << ",\n";
   o << "  \"max_abs_m12\": " << num(e.max_abs_m12) << ",\n";
+  o << line_force_json(r);
   o << "  \"constraint_violation\": " << num(violation) << ",\n";
   if (r.certificate) {
     const Certificate& c = *r.certificate;
@@ -156,6 +190,19 @@ std::string summary_text(const Report& r) {
   o << "total contact force = " << num(total_contact_force(*r.problem, xi)) << ", max xi at nodes = "
     << num(e.max_xi) << ", max |m12| at nodes = " << num(e.max_abs_m12) << ", contact nodes: " << e.contact.size()
     << "\n";
+  if (!r.line.empty()) {
+    const LineForce& l = r.line;
+    o << "line load on the edge (" << l.q.size() << " points): mean " << num(l.mean) << " (total " << num(l.total)
+      << " over length " << num(l.length) << "), min " << num(l.min) << ", max " << num(l.max);
+    if (!l.theta.empty())
+      o << ", q(0) = " << num(line_force_at(l, 0)) << ", q(pi/4) = " << num(line_force_at(l, M_PI / 4));
+    o << "\n";
+    if (!l.fourier.empty()) {
+      o << "  fit q(theta) ~";
+      for (size_t k = 0; k < l.fourier.size(); ++k) o << (k ? " + " : " ") << num(l.fourier[k]) << (k ? " cos " + std::to_string(4 * k) + " theta" : "");
+      o << "\n";
+    }
+  }
   if (r.certificate) {
     const Certificate& c = *r.certificate;
     o << "certificate (relative): violation " << num(c.violation) << ", negative multiplier "

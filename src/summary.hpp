@@ -6,6 +6,7 @@
 
 #include "active_set.hpp"
 #include "contact.hpp"
+#include "line_force.hpp"
 #include "schemes.hpp"
 
 namespace plate {
@@ -16,6 +17,7 @@ struct Report {
   const SolveResult* result = nullptr;
   const NodalFields* nodes = nullptr;
   VectorXd xi;                                    // contact force density at the sample points
+  LineForce line;                                 // the line load on the edge (edge sampling)
   const Certificate* certificate = nullptr;       // the exact solver's; null for the penalty schemes
   double certificate_tol = 0;
   std::vector<std::pair<double, double>> points;  // where the user asked for w
@@ -24,6 +26,7 @@ struct Report {
 };
 
 std::string nodal_csv(const NodalFields& f);
+std::string line_force_csv(const Problem& p, const LineForce& f);
 std::string summary_json(const Report& r);
 std::string summary_text(const Report& r);  // the few lines printed at the end of a run
 

@@ -148,13 +148,3 @@ TEST(ExactSolver, GlobalisationEndsTheCycleWithFallingEnergy) {
   }
   EXPECT_NEAR(energy(p, r.w), best, 1e-14);
 }
-
-TEST(ExactSolver, RefusesGaussSamplingWithAReason) {
-  const Problem p = paper_problem(4, SamplingKind::Gauss);
-  try {
-    solve_exact(p, ExactOptions{});
-    FAIL() << "Gauss sampling was accepted";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("--sampling nodes"), std::string::npos) << e.what();
-  }
-}

@@ -1,0 +1,14 @@
+// The exact constraint for any sampling: w minimises 1/2 w^T K w - F^T w subject to S w >= phi,
+// whatever the rows of S are (Gauss points, points on the obstacle's edge, nodes, or a mix).
+// One factorisation of K; the rows that may touch get a column of G = S K^{-1} S^T each, and the
+// small dense dual problem on them is solved by the dual active-set method (D15).
+#pragma once
+#include "active_set.hpp"
+
+namespace plate {
+
+// `candidates` (one flag per sample row; empty: none) are the rows predicted to touch, for
+// instance by the solution on a coarser grid. Rows found violated later join them.
+ExactResult solve_exact_rows(const Problem& p, const ExactOptions& o, const NodeSet& candidates);
+
+}  // namespace plate

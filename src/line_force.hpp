@@ -1,0 +1,30 @@
+// The contact force as what it is on the paper's cylinder: a line load q on the circle (10).
+// With edge sampling the multiplier at an edge point is a force per unit length, so q(theta) is
+// read off directly, and its total over the rim is the obstacle's whole push on the plate.
+#pragma once
+#include <vector>
+
+#include "problem.hpp"
+
+namespace plate {
+
+struct LineForce {
+  std::vector<double> theta, q;  // at each edge point (theta: circles only)
+  double length = 0;             // of the edge curve
+  double total = 0;              // sum_p W_p q_p over the edge points
+  double mean = 0;               // total / length
+  double min = 0, max = 0;
+  // Least-squares fit q(theta) ~ sum_k a_k cos(4 k theta), k = 0..harmonics-1: the harmonics the
+  // square's eight symmetries allow for a function on a circle about the square's centre.
+  std::vector<double> fourier;
+  bool empty() const { return q.empty(); }
+};
+
+// Eq. (9): the force per unit length at the edge rows of `lambda` (force densities at every
+// sample). Empty when the sampling has no edge rows.
+LineForce line_force(const Problem& p, const VectorXd& lambda, int harmonics = 4);
+
+// q at the edge point nearest the angle theta (circles only).
+double line_force_at(const LineForce& f, double theta);
+
+}  // namespace plate
