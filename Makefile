@@ -3,7 +3,7 @@
 BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
 DRIVERS := $(BUILD)/table $(BUILD)/fig1 $(BUILD)/fig2 $(BUILD)/contraction $(BUILD)/hard_cases $(BUILD)/bench \
-           $(BUILD)/micro_bench
+           $(BUILD)/micro_bench $(BUILD)/continuum $(BUILD)/time_to_accuracy
 BINS  := $(BUILD)/plate $(BUILD)/crosscheck $(BUILD)/plate_tests $(DRIVERS)
 PAPER_NUMBERS := reference/paper_numbers.csv
 
@@ -12,14 +12,19 @@ FIG1_DATA := results/fig1_points.csv results/fig1_surface.dat results/fig1_conta
 FIG2_DATA := results/fig2.csv results/fig2_mesh.csv results/fig2_fit.md results/fig2_mesh.md
 FIGURES   := results/fig1.svg results/fig1.png results/fig2.svg results/fig2.png
 RESULTS   := $(TABLES) results/contraction.md $(FIG1_DATA) $(FIG2_DATA) $(FIGURES)
+CONTINUUM_DATA := results/continuum.md results/continuum.csv results/continuum_error.csv results/continuum_q.csv \
+                  results/continuum_answer.md results/continuum_limits.csv results/continuum_timings.csv
+CONTINUUM := $(CONTINUUM_DATA) results/continuum.svg results/continuum.png results/continuum_q.svg results/continuum_q.png
 BENCH     := results/speed_vs_error.csv results/speed_vs_error.md
-BENCH_ALL := $(BENCH) results/speed_vs_error.svg results/speed_vs_error.png results/micro_benchmarks.md
+TTA       := results/time_to_accuracy.csv results/time_to_accuracy.md
+BENCH_ALL := $(BENCH) results/speed_vs_error.svg results/speed_vs_error.png results/micro_benchmarks.md \
+             $(TTA) results/time_to_accuracy.svg results/time_to_accuracy.png
 PAPER_INPUTS := paper/paper.md paper/style.css $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp) \
-                $(RESULTS) results/crosscheck.md results/hard_cases.md $(BENCH) results/speed_vs_error.svg results/micro_benchmarks.md
+                $(RESULTS) $(CONTINUUM) results/crosscheck.md results/hard_cases.md $(BENCH) results/speed_vs_error.svg results/micro_benchmarks.md
 
-.PHONY: all test deps build results paper crosscheck hard-cases bench clean help FORCE
+.PHONY: all test deps build results paper crosscheck hard-cases continuum bench clean help FORCE
 
-all: build results crosscheck hard-cases bench paper ## build, then every result, figure, benchmark and the document (about 20 min from scratch)
+all: build results continuum crosscheck hard-cases bench paper ## build, then every result, figure, benchmark and the document (about 30 min from scratch)
 
 help: ## list the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 12
@@ -52,6 +57,15 @@ hard-cases: results/hard_cases.md ## tiny eps, area and point contact, n = 512, 
 results/hard_cases.md: $(BUILD)/hard_cases $(BUILD)/plate tests/bad_input.tsv reference/plate_constants.csv
 	$(BUILD)/hard_cases --out results --plate $(BUILD)/plate --cases tests/bad_input.tsv --scratch $(BUILD)/hard-cases-work
 
+continuum: $(CONTINUUM) ## the h -> 0 limit: exact solves n = 8 ... 512, three samplings, orders, Richardson (about 6 min)
+
+# The timings file is written by the same run; it is not byte-identical between runs.
+$(CONTINUUM_DATA) &: $(BUILD)/continuum $(PAPER_NUMBERS)
+	$(BUILD)/continuum --out results
+
+results/continuum.svg results/continuum.png: results/continuum_error.csv
+results/continuum_q.svg results/continuum_q.png: results/continuum_q.csv
+
 results: $(RESULTS) ## the paper's table, Fig. 1, Fig. 2 and the contraction check, in results/
 
 # Each driver writes its files whole (temporary file, then rename); gnuplot writes to a
@@ -75,7 +89,7 @@ results/%.svg: paper/figures/%.gp | deps
 results/%.png: paper/figures/%.gp | deps
 	gnuplot -e "fmt='png'; out='$@.tmp'" $< && mv $@.tmp $@
 
-bench: $(BENCH_ALL) ## speed against error up to n = 512 (a million unknowns), and micro-benchmarks (several minutes)
+bench: $(BENCH_ALL) ## speed against error up to n = 1024, time to accuracy against the continuum limit, micro-benchmarks (about 15 min)
 
 # Timings differ on every run: these files are remade only when the programs change.
 $(BENCH) &: $(BUILD)/bench $(PAPER_NUMBERS)
@@ -85,6 +99,12 @@ results/micro_benchmarks.md: $(BUILD)/micro_bench
 	{ echo '```'; $(BUILD)/micro_bench --benchmark_color=false 2>&1; echo '```'; } > $@.tmp && mv $@.tmp $@
 
 results/speed_vs_error.svg results/speed_vs_error.png: $(BENCH)
+
+# The whole plate process against the continuum limit; timings differ on every run.
+$(TTA) &: $(BUILD)/time_to_accuracy $(BUILD)/plate results/continuum_limits.csv
+	$(BUILD)/time_to_accuracy --plate $(BUILD)/plate --limits results/continuum_limits.csv --out results
+
+results/time_to_accuracy.svg results/time_to_accuracy.png: results/time_to_accuracy.csv
 
 paper: results/paper.html ## the literate document: results/paper.html (self-contained, opens offline)
 

@@ -25,7 +25,8 @@ LineForce line_force(const Problem& p, const VectorXd& lambda, int harmonics) {
   f.min = *std::min_element(f.q.begin(), f.q.end());
   f.max = *std::max_element(f.q.begin(), f.q.end());
   const int m = static_cast<int>(f.theta.size());
-  if (m >= 2 * harmonics) {
+  harmonics = std::min(harmonics, m / 8 + 1);
+  if (m > 0 && harmonics > 0) {
     Eigen::MatrixXd A(m, harmonics);
     Eigen::VectorXd b(m);
     for (int i = 0; i < m; ++i) {
@@ -38,6 +39,13 @@ LineForce line_force(const Problem& p, const VectorXd& lambda, int harmonics) {
   return f;
 }
 // @end line-force
+
+double line_force_fit(const LineForce& f, double theta) {
+  if (f.fourier.empty()) return NAN;
+  double q = 0;
+  for (size_t k = 0; k < f.fourier.size(); ++k) q += f.fourier[k] * std::cos(4.0 * k * theta);
+  return q;
+}
 
 double line_force_at(const LineForce& f, double theta) {
   int best = -1;

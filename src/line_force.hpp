@@ -15,7 +15,8 @@ struct LineForce {
   double mean = 0;               // total / length
   double min = 0, max = 0;
   // Least-squares fit q(theta) ~ sum_k a_k cos(4 k theta), k = 0..harmonics-1: the harmonics the
-  // square's eight symmetries allow for a function on a circle about the square's centre.
+  // square's eight symmetries allow for a function on a circle about the square's centre (fewer
+  // when M points cannot tell them apart: 4 k <= M / 2).
   std::vector<double> fourier;
   bool empty() const { return q.empty(); }
 };
@@ -24,7 +25,10 @@ struct LineForce {
 // sample). Empty when the sampling has no edge rows.
 LineForce line_force(const Problem& p, const VectorXd& lambda, int harmonics = 4);
 
-// q at the edge point nearest the angle theta (circles only).
+// q at the edge point nearest the angle theta (circles only). Point values scatter by about 10%
+// about a smooth curve, because the finite element space cannot resolve a load at the scale of h.
 double line_force_at(const LineForce& f, double theta);
+// The fitted (smoothed) line load sum_k a_k cos(4 k theta); NaN without a fit.
+double line_force_fit(const LineForce& f, double theta);
 
 }  // namespace plate

@@ -92,7 +92,8 @@ std::string line_force_json(const Report& r) {
   o << "  \"line_force\": {\"points\": " << f.q.size() << ", \"length\": " << num(f.length) << ", \"total\": "
     << num(f.total) << ", \"mean\": " << num(f.mean) << ", \"min\": " << num(f.min) << ", \"max\": " << num(f.max);
   if (!f.theta.empty())
-    o << ", \"q_theta_0\": " << num(line_force_at(f, 0)) << ", \"q_theta_pi_4\": " << num(line_force_at(f, M_PI / 4));
+    o << ", \"q_fit_theta_0\": " << num(line_force_fit(f, 0)) << ", \"q_fit_theta_pi_4\": " << num(line_force_fit(f, M_PI / 4))
+      << ", \"q_point_theta_0\": " << num(line_force_at(f, 0)) << ", \"q_point_theta_pi_4\": " << num(line_force_at(f, M_PI / 4));
   o << ",\n    \"fourier_cos_4k_theta\": [";
   for (size_t k = 0; k < f.fourier.size(); ++k) o << (k ? ", " : "") << num(f.fourier[k]);
   o << "],\n    \"theta\": [";
@@ -195,7 +196,8 @@ std::string summary_text(const Report& r) {
     o << "line load on the edge (" << l.q.size() << " points): mean " << num(l.mean) << " (total " << num(l.total)
       << " over length " << num(l.length) << "), min " << num(l.min) << ", max " << num(l.max);
     if (!l.theta.empty())
-      o << ", q(0) = " << num(line_force_at(l, 0)) << ", q(pi/4) = " << num(line_force_at(l, M_PI / 4));
+      o << "; fitted q(0) = " << num(line_force_fit(l, 0)) << ", q(pi/4) = " << num(line_force_fit(l, M_PI / 4))
+        << " (points: " << num(line_force_at(l, 0)) << ", " << num(line_force_at(l, M_PI / 4)) << ")";
     o << "\n";
     if (!l.fourier.empty()) {
       o << "  fit q(theta) ~";

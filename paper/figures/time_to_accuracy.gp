@@ -1,0 +1,29 @@
+# Error against time, from results/time_to_accuracy.csv (written by build/time_to_accuracy): the
+# relative distance of max w and of the total contact force to the continuum limit, against the
+# wall time of the whole plate process, one line per solver and sampling (n = 8, 16, ...).
+# Filled points: certified runs (exit 0); open points: runs that exit 3.
+# Usage: gnuplot -e "fmt='svg'; out='results/time_to_accuracy.svg'" paper/figures/time_to_accuracy.gp
+if (fmt eq 'svg') { set terminal svg size 1000,450 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 1000,450 font 'Helvetica,11' }
+set output out
+set datafile separator ','
+set logscale xy
+set format y '10^{%L}'
+set format x '10^{%L}'
+set xlabel 'wall time of the plate process (s)'
+set ylabel 'relative error against the limit'
+set grid
+set key bottom left box opaque font ',10'
+data = 'results/time_to_accuracy.csv'
+stats data using 2 nooutput
+blocks = STATS_blocks
+# The configurations of src/time_to_accuracy_main.cpp, in its order (the CSV has one block each).
+array names[6] = ["exact edge (default)", "exact nodes", "exact Gauss", "(3a) edge", "(3a) Gauss (paper)", "(5a) Gauss (paper)"]
+ok(col) = (column(3) == 0 && column(col) > 0) ? column(col) : NaN
+bad(col) = (column(3) != 0 && column(col) > 0) ? column(col) : NaN
+set multiplot layout 1,2
+do for [c in "8 9"] {
+  set title (c eq "8" ? 'max w' : 'total contact force')
+  plot for [b = 0:blocks - 1] data index b using 4:(ok(int(c))) with linespoints pt 7 lc b + 1 title names[b + 1], \
+       for [b = 0:blocks - 1] data index b using 4:(bad(int(c))) with points pt 6 lc b + 1 notitle
+}
+unset multiplot

@@ -1,0 +1,253 @@
+// continuum: the h -> 0 limit of the paper's problem. Solves it exactly (no eps) on n = 8 ... 512
+// with the constraint on the cylinder's rim (edge sampling), at Gauss points and at the nodes, and
+// writes results/continuum.{md,csv}, continuum_error.csv, continuum_q.csv, continuum_answer.md and
+// continuum_limits.csv, continuum_timings.csv. Run by `make continuum`; `continuum --help` lists the options.
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "active_set.hpp"
+#include "atomic_file.hpp"
+#include "contact.hpp"
+#include "format.hpp"
+#include "line_force.hpp"
+#include "published.hpp"
+#include "richardson.hpp"
+#include "stopwatch.hpp"
+
+using namespace plate;
+
+namespace {
+
+struct Row {
+  SamplingKind kind;
+  int n = 0, unknowns = 0, samples = 0, edge_points = 0;
+  bool certified = false;
+  double max_w = 0, w_mid = 0, w_diag = 0, force = 0, mean_line = 0, q0 = NAN, q45 = NAN, m12 = 0, seconds = 0;
+  LineForce line;
+};
+
+// The quantities a reader asks for, each with how it is read from a row.
+struct Quantity {
+  const char* name;
+  const char* column;
+  double Row::*field;
+};
+const std::vector<Quantity> kQuantities = {
+    {"max w", "max_w", &Row::max_w},
+    {"w(0.5, 0.125)", "w_0.5_0.125", &Row::w_mid},
+    {"w(0.25, 0.25)", "w_0.25_0.25", &Row::w_diag},
+    {"total force", "total_force", &Row::force},
+    {"mean line force", "mean_line_force", &Row::mean_line},
+    {"fitted q(0)", "q_fit_theta_0", &Row::q0},
+    {"fitted q(pi/4)", "q_fit_theta_pi_4", &Row::q45},
+    {"max |m12|", "max_abs_m12", &Row::m12},
+};
+constexpr double kNu = 0.3;
+
+Row solve_one(SamplingKind kind, int n, const std::map<std::string, double>& pub) {
+  const double cx = published(pub, "obstacle_cx"), cy = published(pub, "obstacle_cy"), r = published(pub, "obstacle_radius");
+  const Field phi = paper_obstacle(pub), no_load = [](double, double) { return 0.0; };
+  const auto t0 = Clock::now();
+  const Problem p = make_problem(make_grid(n), SamplingSpec{kind, circle_edge(cx, cy, r)}, phi, no_load);
+  const ExactResult x = solve_exact(p, phi, no_load, ExactOptions{});
+  Row row;
+  row.seconds = seconds_since(t0);
+  row.kind = kind, row.n = n, row.unknowns = p.grid.unknowns(), row.samples = p.sampling.size();
+  row.edge_points = p.sampling.edge_size();
+  row.certified = x.converged;
+  const NodalFields f = nodal_fields(p, x.w, phi, x.lambda, kNu);
+  for (int k = 0; k < f.size(); ++k) row.max_w = std::max(row.max_w, f.w[k]), row.m12 = std::max(row.m12, std::abs(f.m12[k]));
+  row.w_mid = evaluate(p.grid, x.w, 0.5, 0.125).w;
+  row.w_diag = evaluate(p.grid, x.w, 0.25, 0.25).w;
+  row.force = total_contact_force(p, x.lambda);
+  row.mean_line = row.force / (2 * M_PI * r);  // with f = 0 the whole push is on the rim
+  row.line = line_force(p, x.lambda);
+  // The smoothed line load: point values scatter about it by some 10% (see line_force.hpp).
+  if (!row.line.empty()) row.q0 = line_force_fit(row.line, 0), row.q45 = line_force_fit(row.line, M_PI / 4);
+  if (!x.converged) std::cerr << "continuum: " << to_string(kind) << " n = " << n << ": " << x.message << "\n";
+  return row;
+}
+
+std::string num(double v) { return std::isfinite(v) ? fmt("%.10g", v) : ""; }
+
+std::vector<double> column(const std::vector<Row>& rows, SamplingKind kind, double Row::*field) {
+  std::vector<double> v;
+  for (const Row& r : rows)
+    if (r.kind == kind) v.push_back(r.*field);
+  return v;
+}
+
+std::string csv(const std::vector<Row>& rows) {
+  std::ostringstream o;
+  o << "# continuum: the paper's problem (f = 0, R = 0.0625 on the disk of radius 0.25) solved exactly on n x n\n"
+       "# grids, three samplings of the constraint; made by build/continuum. max_w and max_abs_m12 over the grid\n"
+       "# nodes (nu = 0.3); mean_line_force = total_force / (2 pi r); q_fit: the line load on the rim\n"
+       "# fitted by cos(4 k theta), k = 0..3, at theta = 0 and pi/4 (edge only)\n"
+       "sampling,n,unknowns,samples,edge_points,certified";
+  for (const Quantity& q : kQuantities) o << "," << q.column;
+  o << "\n";
+  for (const Row& r : rows) {
+    o << to_string(r.kind) << "," << r.n << "," << r.unknowns << "," << r.samples << "," << r.edge_points << ","
+      << (r.certified ? 1 : 0);
+    for (const Quantity& q : kQuantities) o << "," << num(r.*q.field);
+    o << "\n";
+  }
+  return o.str();
+}
+
+struct Study {
+  std::vector<Row> rows;
+  std::vector<int> grids;
+  std::map<std::pair<SamplingKind, std::string>, Extrapolation> fits;
+};
+
+const std::vector<SamplingKind> kKinds = {SamplingKind::Edge, SamplingKind::Gauss, SamplingKind::Nodes};
+
+std::string answer(const Study& s) {
+  const Extrapolation& w = s.fits.at({SamplingKind::Edge, "max w"});
+  const Extrapolation& f = s.fits.at({SamplingKind::Edge, "total force"});
+  const Extrapolation& m = s.fits.at({SamplingKind::Edge, "mean line force"});
+  std::ostringstream o;
+  auto one = [](const Extrapolation& e) {
+    return fmt("%.9g", e.limit) + " +- " + fmt("%.1e", e.bar) +
+           (e.steady ? " (Richardson, order " + fmt("%.2f", e.orders.back()) + ")" : " (finest grid; the order is not steady)");
+  };
+  o << "**The continuum answer** (edge sampling, exact solves on n = " << s.grids.front() << " ... " << s.grids.back()
+    << "): max w = " << one(w) << ", total contact force = " << one(f) << ", mean line force on the rim = " << one(m)
+    << ".\n";
+  return o.str();
+}
+
+std::string markdown(const Study& s) {
+  std::ostringstream o;
+  o << "Made by `make continuum` (`build/continuum`); numbers in `continuum.csv`, errors in `continuum_error.csv`, "
+       "the line load in `continuum_q.csv`, run times in `continuum_timings.csv`.\n\n"
+    << answer(s) << "\n"
+    << "Every run is the exact discrete solution (no eps), certified to 1e-10. Edge sampling puts the constraint on "
+       "the rim, where the plate touches, and at the nodes inside it; Gauss and nodal sampling are the paper's two "
+       "readings of (8).\n\n";
+  for (SamplingKind k : kKinds) {
+    o << "**" << to_string(k) << " sampling**\n\n| n | unknowns | samples | certified";
+    for (const Quantity& q : kQuantities) o << " | " << q.name;
+    o << " |\n|---|---|---|---";
+    for (size_t i = 0; i < kQuantities.size(); ++i) o << "|---";
+    o << "|\n";
+    for (const Row& r : s.rows) {
+      if (r.kind != k) continue;
+      o << "| " << r.n << " | " << r.unknowns << " | " << r.samples << " | " << (r.certified ? "yes" : "**no**");
+      for (const Quantity& q : kQuantities) o << " | " << (std::isfinite(r.*q.field) ? num(r.*q.field) : "n/a");
+      o << " |\n";
+    }
+    o << "\n";
+  }
+  o << "**Observed orders and limits.** The order from three successive grids is log2 of the ratio of their "
+       "increments; it exists where the increments keep one sign and shrink. Where the last two orders differ by "
+       "at most 0.3 the order is called steady, and the Richardson limit from the last three grids is given with "
+       "an error bar: its distance to the limit the three grids before give. Elsewhere no extrapolation is trusted: "
+       "the finest value is given with its last increment as the error bar, which bounds its error only if the "
+       "increments beyond the finest grid at least halve each time.\n\n"
+    << "| quantity | sampling | orders (coarse to fine) | verdict |\n|---|---|---|---|\n";
+  for (const Quantity& q : kQuantities)
+    for (SamplingKind k : kKinds) {
+      const Extrapolation& e = s.fits.at({k, q.name});
+      if (e.orders.empty()) continue;
+      o << "| " << q.name << " | " << to_string(k) << " | ";
+      for (size_t i = 0; i < e.orders.size(); ++i) o << (i ? ", " : "") << (std::isfinite(e.orders[i]) ? fmt("%.2f", e.orders[i]) : "-");
+      o << " | " << e.verdict << " |\n";
+    }
+  return o.str();
+}
+
+// The limits, machine-readable, for the bench's time to accuracy and for the document.
+std::string limits(const Study& s) {
+  std::ostringstream o;
+  o << "# continuum: Richardson limits (edge sampling rows are the continuum answer); made by build/continuum\n"
+       "# steady: 1 if the last two observed orders differ by at most 0.3, and then limit is Richardson's and bar its\n"
+       "# distance to the previous Richardson limit; 0: limit is the finest value and bar its last increment\n"
+       "quantity,sampling,steady,order,limit,bar\n";
+  for (const Quantity& q : kQuantities)
+    for (SamplingKind k : kKinds) {
+      const Extrapolation& e = s.fits.at({k, q.name});
+      if (e.orders.empty()) continue;
+      o << q.column << "," << to_string(k) << "," << (e.steady ? 1 : 0) << ","
+        << (e.steady ? fmt("%.3f", e.orders.back()) : "") << "," << num(e.limit) << "," << fmt("%.2e", e.bar) << "\n";
+    }
+  return o.str();
+}
+
+// Relative error of every row against the edge-sampling limit, for the figure.
+std::string errors(const Study& s) {
+  std::ostringstream o;
+  o << "# continuum: |value - edge limit| / |edge limit| for max w and the total force; made by build/continuum\n"
+       "sampling,n,h,err_max_w,err_total_force\n";
+  const double w = s.fits.at({SamplingKind::Edge, "max w"}).limit, f = s.fits.at({SamplingKind::Edge, "total force"}).limit;
+  for (const Row& r : s.rows)
+    o << to_string(r.kind) << "," << r.n << "," << num(1.0 / r.n) << "," << fmt("%.4e", std::abs(r.max_w - w) / w) << ","
+      << fmt("%.4e", std::abs(r.force - f) / f) << "\n";
+  return o.str();
+}
+
+std::string line_loads(const Study& s) {
+  std::ostringstream o;
+  o << "# continuum: the line load q (force per unit length) at the rim points, edge sampling; made by build/continuum\n"
+       "n,theta,q\n";
+  bool first = true;
+  for (const Row& r : s.rows)
+    if (r.kind == SamplingKind::Edge && r.n >= 32) {
+      if (!first) o << "\n\n";  // gnuplot: one data block per grid
+      first = false;
+      for (size_t k = 0; k < r.line.q.size(); ++k) o << r.n << "," << num(r.line.theta[k]) << "," << num(r.line.q[k]) << "\n";
+    }
+  return o.str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  clean_up_on_interrupt("continuum");
+  CLI::App app{"continuum: the h -> 0 limit of the paper's problem, from exact solves with edge, Gauss and nodal\n"
+               "sampling on n = coarsest, 2 coarsest, ..., finest, with observed orders and Richardson limits."};
+  std::string out = "results", numbers = "reference/paper_numbers.csv";
+  int coarsest = 8, finest = 512;
+  app.add_option("--out", out, "folder for the results")->capture_default_str();
+  app.add_option("--numbers", numbers, "the paper's numbers (obstacle)")->check(CLI::ExistingFile)->capture_default_str();
+  app.add_option("--coarsest", coarsest, "cells on the coarsest grid")->check(CLI::Range(2, 1024))->capture_default_str();
+  app.add_option("--finest", finest, "cells on the finest grid")->check(CLI::Range(8, 2048))->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+  try {
+    if (finest < 4 * coarsest) throw std::invalid_argument("--finest must be at least 4 times --coarsest (three grids)");
+    const auto pub = read_paper_numbers(numbers);
+    Study s;
+    for (int n = coarsest; n <= finest; n *= 2) s.grids.push_back(n);
+    std::ostringstream timings;
+    timings << "# continuum run times in seconds (assembly and exact solve, grid-sequenced); not byte-identical\n"
+               "sampling,n,seconds\n";
+    for (SamplingKind k : kKinds)
+      for (int n : s.grids) {
+        std::cerr << "continuum: " << to_string(k) << " sampling, n = " << n << "\n";
+        s.rows.push_back(solve_one(k, n, pub));
+        timings << to_string(k) << "," << n << "," << fmt("%.3g", s.rows.back().seconds) << "\n";
+      }
+    for (const Quantity& q : kQuantities)
+      for (SamplingKind k : kKinds) s.fits[{k, q.name}] = extrapolate(column(s.rows, k, q.field));
+    write_file_atomically(out + "/continuum.csv", csv(s.rows));
+    write_file_atomically(out + "/continuum_error.csv", errors(s));
+    write_file_atomically(out + "/continuum_q.csv", line_loads(s));
+    write_file_atomically(out + "/continuum_answer.md", answer(s));
+    write_file_atomically(out + "/continuum_limits.csv", limits(s));
+    write_file_atomically(out + "/continuum.md", markdown(s));
+    write_file_atomically(out + "/continuum_timings.csv", timings.str());
+    for (const Row& r : s.rows)
+      if (!r.certified) return 3;
+    return 0;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "continuum: bad input: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "continuum: error: " << e.what() << "\n";
+    return 4;
+  }
+}

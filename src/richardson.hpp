@@ -1,0 +1,22 @@
+// Observed order and Richardson extrapolation of a sequence computed on grids h, h/2, h/4, ...:
+// the h -> 0 limit with an error bar, stated only where the order is steady.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace plate {
+
+struct Extrapolation {
+  std::vector<double> orders;  // from each triple (k, k+1, k+2); NaN where the increments change sign or grow
+  bool steady = false;         // the last two orders exist and differ by at most `spread`
+  // Steady: Richardson from the last triple, and its distance to the Richardson limit of the triple
+  // before. Not steady: the finest value, and the last increment (the error of the finest value if
+  // the increments from there on at least halve each time, which nothing here can check).
+  double limit = 0, bar = 0;
+  std::string verdict;  // one line for a report
+};
+
+// Eq. (D16): v_h = v + C h^p + ..., p from successive increments, v ~ v_h/4 + d / (2^p - 1).
+Extrapolation extrapolate(const std::vector<double>& values, double spread = 0.3);
+
+}  // namespace plate
