@@ -125,3 +125,13 @@ TEST(Cli, InterruptedRunLeavesNoFileBehind) {
   EXPECT_EQ(r.files_left, 0);  // neither an output nor a temporary file
   std::filesystem::remove_all(dir);
 }
+
+// The defaults answer: a certified exact solution (exit 0) on coarse and fine grids, even and odd,
+// for the paper's cylinder and for a smooth obstacle that the plate touches on an area.
+TEST(Cli, DefaultsGiveACertifiedAnswer) {
+  for (const std::string obstacle : {"", "--obstacle '0.05 - 2*((x-0.5)^2 + (y-0.5)^2)'"})
+    for (int n : {2, 3, 4, 7, 16, 64, 128}) {
+      const PlateRun r = run_plate("-q -n " + std::to_string(n) + " " + obstacle);
+      EXPECT_EQ(r.status, 0) << "n = " << n << " " << obstacle << "\n" << r.output;
+    }
+}

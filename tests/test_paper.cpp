@@ -97,3 +97,11 @@ TEST(Published, TheTableIsTheOneInThePaper) {
   EXPECT_DOUBLE_EQ(plate::published(n, "h") * plate::published(n, "h") * plate::published(n, "cells"), 1.0);
   EXPECT_THROW(plate::published(n, "no such key"), std::runtime_error);
 }
+
+// The README quotes the continuum answer; it must be the one results/ holds.
+TEST(Readme, QuotesTheContinuumAnswerOfResults) {
+  const std::string readme = slurp(kRoot / "README.md"), answer = slurp(kRoot / "results/continuum_answer.md");
+  ASSERT_FALSE(answer.empty());
+  EXPECT_NE(readme.find(answer.substr(0, answer.find_last_not_of('\n') + 1)), std::string::npos)
+      << "README.md does not contain:\n" << answer;
+}
