@@ -1,14 +1,17 @@
-// Temporary file + fsync-free rename: rename(2) within one directory is atomic.
+// Temporary file + fsync-free rename: rename(2) within one directory is atomic. Symlinks are
+// followed, devices and FIFOs written directly, and every write error (ENOSPC too) is reported.
 #include "atomic_file.hpp"
 
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <algorithm>
 #include <cstring>
-#include <fstream>
+#include <filesystem>
 #include <stdexcept>
 
 namespace plate {
@@ -49,23 +52,76 @@ void clean_up_on_interrupt(const char* program) {
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaction(sig, &action, nullptr);
 }
 
-void write_file_atomically(const std::string& path, const std::string& content) {
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  const Pending pending(tmp);
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
-    out << content;
-    out.flush();
-    if (!out) {
-      std::remove(tmp.c_str());
-      throw std::runtime_error("cannot write " + path + ": write failed");
-    }
+namespace {
+// Writes all of `content` to an open descriptor; false on any error (ENOSPC included).
+bool write_all(int fd, const std::string& content) {
+  size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<size_t>(n);
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write " + path + ": " + why);
+  return true;
+}
+
+[[noreturn]] void fail(const std::string& path, const std::string& why) {
+  throw std::runtime_error("cannot write " + path + ": " + why);
+}
+}  // namespace
+
+std::string output_target(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path p(path);
+  if (!fs::is_symlink(fs::symlink_status(p, ec))) return path;
+  // Follow the link (and links to links) to the file it names; the link itself stays.
+  return fs::weakly_canonical(p, ec).string();
+}
+
+void check_writable(const std::string& path) {
+  namespace fs = std::filesystem;
+  const std::string target = output_target(path);
+  struct stat st {};
+  if (::stat(target.c_str(), &st) == 0) {
+    if (S_ISDIR(st.st_mode)) fail(path, "it is a directory");
+    if (::access(target.c_str(), W_OK) != 0) fail(path, std::strerror(errno));
+    return;
+  }
+  const fs::path parent = fs::path(target).parent_path().empty() ? fs::path(".") : fs::path(target).parent_path();
+  if (::access(parent.c_str(), W_OK) != 0) fail(path, std::strerror(errno));
+}
+
+void write_file_atomically(const std::string& path, const std::string& content) {
+  const std::string target = output_target(path);
+  struct stat st {};
+  const bool exists = ::stat(target.c_str(), &st) == 0;
+  if (exists && S_ISDIR(st.st_mode)) fail(path, "it is a directory");
+  if (exists && !S_ISREG(st.st_mode)) {
+    // A device or a FIFO: no half-written file can be left, and replacing it would destroy it.
+    const int fd = ::open(target.c_str(), O_WRONLY | O_CLOEXEC);
+    if (fd < 0) fail(path, std::strerror(errno));
+    const bool ok = write_all(fd, content);
+    const int err = errno;
+    if (::close(fd) != 0 || !ok) fail(path, std::strerror(ok ? errno : err));
+    return;
+  }
+  const std::string tmp = target + ".tmp." + std::to_string(::getpid());
+  const Pending pending(tmp);
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) fail(path, std::strerror(errno));
+  bool ok = write_all(fd, content);
+  int err = errno;
+  if (ok && exists && ::fchmod(fd, st.st_mode & 07777) != 0) ok = false, err = errno;  // keep the old permissions
+  if (::close(fd) != 0 && ok) ok = false, err = errno;
+  if (!ok) {
+    ::unlink(tmp.c_str());
+    fail(path, std::strerror(err));
+  }
+  if (std::rename(tmp.c_str(), target.c_str()) != 0) {
+    err = errno;
+    ::unlink(tmp.c_str());
+    fail(path, std::strerror(err));
   }
 }
 

@@ -5,8 +5,17 @@
 
 namespace plate {
 
-// Throws std::runtime_error naming the path if it cannot be written.
+// Throws std::runtime_error naming the path if it cannot be written (a full disk included). A
+// symlink is written through to its target, which keeps its permissions; a device or a FIFO is
+// written directly rather than replaced.
 void write_file_atomically(const std::string& path, const std::string& content);
+
+// The file a write to `path` lands in: the target of a symlink, else the path itself.
+std::string output_target(const std::string& path);
+
+// Throws std::runtime_error naming the path if a write to it would fail for a reason known now (a
+// directory, no permission, a missing folder), so a long run can refuse it before it starts.
+void check_writable(const std::string& path);
 
 // On SIGINT, SIGTERM or SIGHUP: delete the temporary file being written, if any, say on stderr
 // that `program` was interrupted (files already renamed into place are whole), and exit with

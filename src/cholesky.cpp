@@ -6,6 +6,7 @@
 namespace plate {
 
 void Cholesky::analyze(const SpMat& A) {
+  llt_.cholmod().print = 0;  // CHOLMOD would print its own warnings on stdout; we report failures ourselves
   llt_.analyzePattern(A);
   if (llt_.info() != Eigen::Success) throw std::runtime_error("CHOLMOD: symbolic analysis failed");
   analyzed_ = true;

@@ -25,6 +25,16 @@ struct Compiled {
 }  // namespace
 
 Field expression(const std::string& what, const std::string& text) {
+  // muparser also reads assignments (x = 1) and lists (a, b, whose value is the last); a field is
+  // one expression in x and y, so both are refused rather than silently evaluated.
+  for (size_t i = 0; i < text.size(); ++i) {
+    const bool assignment = text[i] == '=' && (i == 0 || std::string("<>!=").find(text[i - 1]) == std::string::npos) &&
+                            (i + 1 >= text.size() || text[i + 1] != '=');
+    if (text[i] == ',' || assignment)
+      throw std::invalid_argument(what + " expression \"" + text + "\" is not valid: '" + text[i] +
+                                  "' at position " + std::to_string(i + 1) +
+                                  " (one expression in x and y; no assignments or lists)");
+  }
   auto c = std::make_shared<Compiled>();
   try {
     c->parser.DefineVar("x", &c->x);

@@ -4,8 +4,13 @@
 // on the cylinder's rim and at the nodes inside it: the answer comes with a certificate.
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 #include "atomic_file.hpp"
@@ -31,15 +36,17 @@ const CLI::Validator kCellCount(
       char* end = nullptr;
       const long v = std::strtol(s.c_str(), &end, 10);
       if (end == s.c_str() || *end != '\0') return "must be a whole number, got " + s;
-      return (v >= 1 && v <= (1 << 16)) ? std::string() : "must be between 1 and 65536, got " + s;
+      return (v >= 1 && v <= (1 << 14)) ? std::string() : "must be between 1 and 16384, got " + s;
     },
-    "INT in [1, 65536]");
+    "INT in [1, 16384]");
 const CLI::Validator kIterationCap(
     [](std::string& s) {
       char* end = nullptr;
-      const long v = std::strtol(s.c_str(), &end, 10);
-      if (end == s.c_str() || *end != '\0') return "must be a whole number, got " + s;
-      return (v >= 1 && v <= 1000000000L) ? std::string() : "must be between 1 and 1e9, got " + s;
+      const double v = std::strtod(s.c_str(), &end);  // "1e9" is a whole number too
+      if (end == s.c_str() || *end != '\0' || v != std::floor(v)) return "must be a whole number, got " + s;
+      if (!(v >= 1 && v <= 1e9)) return "must be between 1 and 1e9, got " + s;
+      s = std::to_string(static_cast<long>(v));
+      return std::string();
     },
     "INT in [1, 1e9]");
 const CLI::Validator kFinite(
@@ -58,6 +65,49 @@ std::pair<double, double> parse_pair(const std::string& option, const std::strin
   return {x, y};
 }
 
+
+// Refuses grids with nothing to solve and grids that cannot fit: the sizes are counted in 64 bits,
+// and the memory estimate is the exact solver's measured peak per unknown (results/speed_vs_error.md:
+// about 3.5 KiB at n = 1024) against this machine's physical memory.
+void check_grid_size(const plate::Grid& g) {
+  const long long nodes = static_cast<long long>(g.nx - 1) * (g.ny - 1), unknowns = 4 * nodes;
+  if (nodes <= 0)
+    throw std::invalid_argument("--cells: the grid " + std::to_string(g.nx) + " x " + std::to_string(g.ny) +
+                                " has no interior node, so the clamped plate is w = 0 and there is nothing to solve "
+                                "(use at least 2 cells across each side)");
+  const double need = unknowns * 3.5 * 1024, have = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
+  if (unknowns > std::numeric_limits<int>::max() || (have > 0 && need > have))
+    throw std::invalid_argument("--cells: " + std::to_string(unknowns) + " unknowns need about " +
+                                plate::fmt("%.3g", need / (1 << 30)) + " GiB, more than this machine's " +
+                                plate::fmt("%.3g", have / (1 << 30)) + " GiB");
+}
+
+// Every output path is checked before the solve, so a bad one fails at once and leaves nothing.
+void check_outputs(const std::vector<std::string>& paths) {
+  std::vector<std::string> targets;
+  for (const auto& p : paths) {
+    if (p.empty()) continue;
+    plate::check_writable(p);
+    const std::string t = std::filesystem::weakly_canonical(plate::output_target(p)).string();
+    if (std::find(targets.begin(), targets.end(), t) != targets.end())
+      throw std::invalid_argument("--json, --csv and --line-csv must name different files, but two name " + p);
+    targets.push_back(t);
+  }
+}
+
+// The size of the answer, for tolerances that do not depend on units: the largest obstacle value
+// at a sample, or the free plate's largest deflection if that is larger (one extra solve).
+double answer_scale(const plate::Problem& p) {
+  double s = 0;
+  for (int q = 0; q < p.phi.size(); ++q)
+    if (std::isfinite(p.phi[q])) s = std::max(s, std::abs(p.phi[q]));
+  if (p.F.lpNorm<Eigen::Infinity>() > 0) {
+    plate::Cholesky chol;
+    chol.factorize(p.K);
+    s = std::max(s, plate::max_nodal_abs(chol.solve(p.F)));
+  }
+  return s > 0 ? s : p.grid.lx();  // no obstacle and no load: w = 0; any length will do
+}
 
 }  // namespace
 
@@ -123,7 +173,7 @@ int main(int argc, char** argv) {
                  "the obstacle's edge for edge sampling: auto (the cylinder's rim; none for an expression), none "
                  "(interior samples alone), circle:cx,cy,r, or polygon:x1,y1;x2,y2;... (about one point per h)")
       ->capture_default_str();
-  auto* eps_opt = app.add_option("--eps", eps_fixed, "solve at this eps only (no continuation)")->check(kFinitePositive);
+  auto* eps_opt = app.add_option("--eps", eps_fixed, "solve at this eps only (no continuation); every eps is in units of lx^4, so it means the same in any unit of length")->check(kFinitePositive);
   auto* eps_start_opt = app.add_option("--eps-start", opt.eps_start, "first eps of the continuation")
       ->check(kFinitePositive)
       ->capture_default_str()
@@ -133,7 +183,8 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->excludes(eps_opt);
   auto* tol_opt = app.add_option("--tol", opt.tol,
-                 "OS: stop when steps, and successive eps levels, are within tol (max over nodes); "
+                 "OS, relative to the size of the answer (max |phi| at the samples, or the free plate's max |w| if larger): "
+                 "stop when steps, and successive eps levels, are within tol times that size (max over nodes); "
                  "with --scheme exact the bound on every relative certificate entry (default there 1e-10)")
       ->check(kFinitePositive)
       ->capture_default_str();
@@ -166,6 +217,8 @@ int main(int argc, char** argv) {
   const auto t0 = plate::Clock::now();
   try {
     const Grid g = make_grid(n, lx, ly);
+    check_grid_size(g);
+    check_outputs({json_path, csv_path, line_csv_path});
     Field phi;
     SamplingSpec spec{sampling_kind(sampling), {}};
     if (obstacle == "cylinder") {
@@ -223,6 +276,12 @@ int main(int argc, char** argv) {
     }
     const Problem problem = make_problem(g, spec, phi, f);
     report.seconds_assemble = seconds_since(t0);
+    // Scale-free penalty: eps in units of L^4 (the stiffness K ~ L^-2 against eps^-1 M ~ L^2 / eps),
+    // OS relative to the size of the answer. On the unit square eps is unchanged.
+    const double L4 = std::pow(g.lx(), 4), scale = exact ? 1.0 : answer_scale(problem);
+    opt.eps_start *= L4;
+    opt.eps_min *= L4;
+    opt.tol *= scale;
 
     SolveResult result;
     ExactResult exact_result;
@@ -239,6 +298,15 @@ int main(int argc, char** argv) {
     } else {
       result = solve(problem, opt);
       xi = contact_force_density(problem, result.w, result.eps);
+      const double below = (problem.phi - problem.sampling.S * result.w).cwiseMax(0.0).maxCoeff();
+      if (result.converged && below > opt.tol) {  // the penalty lets the plate into the obstacle by about eps xi
+        result.converged = false;
+        result.message = plate::fmt("the plate lies %.3g below the obstacle at a sample point", below) +
+                         plate::fmt(", more than tol = %.3g (the penalty's own error at eps = ", opt.tol) +
+                         plate::fmt("%g); use a smaller --eps-min or --scheme exact", result.eps);
+      }
+      report.config.emplace_back("tol (absolute: --tol times the answer's size)", plate::fmt("%.6g", opt.tol));
+      report.config.emplace_back("eps unit (lx^4)", plate::fmt("%.6g", L4));
     }
     const NodalFields nodes = nodal_fields(problem, result.w, phi, xi, nu);
     report.xi = xi;

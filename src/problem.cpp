@@ -57,8 +57,23 @@ Problem make_problem(const Grid& g, SamplingKind kind, const Field& obstacle, co
   return make_problem(g, SamplingSpec{kind, {}}, obstacle, load);
 }
 
+// The obstacle at every grid node must be a number (or -inf), whatever the sampling: a NaN between
+// samples would otherwise pass unseen and show up in the nodal output.
+void check_obstacle_at_nodes(const Grid& g, const Field& obstacle) {
+  for (int j = 0; j <= g.ny; ++j)
+    for (int i = 0; i <= g.nx; ++i) {
+      const double v = obstacle(g.x(i), g.y(j));
+      if (std::isnan(v) || v == INFINITY) {
+        std::ostringstream m;
+        m << "obstacle must be a number or -inf (no constraint), but phi(" << g.x(i) << ", " << g.y(j) << ") = " << v;
+        throw std::invalid_argument(m.str());
+      }
+    }
+}
+
 Problem make_problem(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load) {
   check_obstacle_on_boundary(g, obstacle);
+  check_obstacle_at_nodes(g, obstacle);
   // Without an edge curve the edge kinds keep their interior samples alone.
   Problem p{g, make_sampling(g, spec.kind, spec.edge), {}, {}, {}, {}, spec};
   p.phi.resize(p.sampling.size());

@@ -5,6 +5,7 @@
 #include "schemes.hpp"
 
 #include <cmath>
+#include <vector>
 #include <sstream>
 #include <stdexcept>
 
@@ -28,20 +29,43 @@ double max_nodal_abs(const VectorXd& w) {
 
 namespace {
 
-void factorize_timed(Cholesky& chol, const SpMat& A, double* seconds) {
+void factorize_timed(Cholesky& chol, const SpMat& A, double* seconds, double eps) {
   const auto t0 = Clock::now();
-  chol.factorize(A);
+  try {
+    chol.factorize(A);
+  } catch (const std::runtime_error&) {
+    // K + eps^-1 S^T W S is positive definite in exact arithmetic; in floating point a tiny eps
+    // drowns K, and that is the user's eps, not a fault of the solver.
+    std::ostringstream m;
+    m << "eps = " << eps << " is too small: K + eps^-1 S^T W S is not numerically positive definite "
+      << "(CHOLMOD could not factorise it); use a larger --eps, --eps-min or --eps-start";
+    throw std::invalid_argument(m.str());
+  }
   if (seconds) *seconds += seconds_since(t0);
 }
 
 // One step of a level: solve, measure the step in the C-norm, report, test the first stopping rule.
+// A non-finite iterate, or steps that no longer shrink at all (the last one not below the one 1000
+// steps before: slower than any contraction double precision can show), end the level at once with `failure` set: iterating on could only waste time.
 bool step_and_check(const Cholesky& chol, const VectorXd& rhs, VectorXd& w, double eps, LevelRecord& r,
-                    const SolveOptions& o) {
+                    const SolveOptions& o, std::vector<double>& steps) {
   VectorXd next = chol.solve(rhs);
   r.last_step = max_nodal_abs(next - w);
   w.swap(next);
   ++r.iterations;
   if (o.on_iterate) o.on_iterate(eps, r.iterations, w);
+  if (!w.allFinite()) {
+    r.failure = "the iterate is not finite (NaN or inf) after " + std::to_string(r.iterations) + " steps";
+    return false;
+  }
+  steps.push_back(r.last_step);
+  constexpr size_t kWindow = 1000;
+  if (r.last_step > o.tol && steps.size() > kWindow && !(r.last_step < steps[steps.size() - 1 - kWindow])) {
+    std::ostringstream m;
+    m << "the steps stopped shrinking: step " << r.iterations << " is " << r.last_step << ", step "
+      << r.iterations - kWindow << " was " << steps[steps.size() - 1 - kWindow];
+    r.failure = m.str();
+  }
   return r.last_step <= o.tol;
 }
 // Why a run whose steps met the stopping rules is still not an answer.
@@ -69,13 +93,14 @@ LevelRecord linear_scheme_level(const Problem& p, double eps, VectorXd& w, Chole
   LevelRecord r;
   r.eps = eps;
   const SpMat A = p.K + (1.0 / eps) * p.M;
-  factorize_timed(chol, A, seconds_factorize);
+  factorize_timed(chol, A, seconds_factorize, eps);
   r.factorizations = 1;
   const VectorXd scaled_w = p.sampling.weights / eps;
-  while (r.iterations < o.max_iter) {
+  std::vector<double> steps;
+  while (r.iterations < o.max_iter && r.failure.empty()) {
     const VectorXd lifted = (p.sampling.S * w).cwiseMax(p.phi);  // w - beta(w) = max(w, phi)
     const VectorXd rhs = p.F + p.sampling.S.transpose() * scaled_w.cwiseProduct(lifted);
-    if (step_and_check(chol, rhs, w, eps, r, o)) {
+    if (step_and_check(chol, rhs, w, eps, r, o, steps)) {
       r.converged = true;
       break;
     }
@@ -93,7 +118,8 @@ LevelRecord nonlinear_scheme_level(const Problem& p, double eps, VectorXd& w, Ch
   const int npts = p.sampling.size();
   Eigen::Matrix<bool, Eigen::Dynamic, 1> active, previous;
   VectorXd d(npts), d_phi(npts);
-  while (r.iterations < o.max_iter) {
+  std::vector<double> steps;
+  while (r.iterations < o.max_iter && r.failure.empty()) {
     active = ((p.sampling.S * w) - p.phi).array() < 0.0;  // K(w^n) = 1 where w^n < phi
     if (r.iterations == 0 || active != previous) {
       for (int i = 0; i < npts; ++i) {
@@ -102,12 +128,12 @@ LevelRecord nonlinear_scheme_level(const Problem& p, double eps, VectorXd& w, Ch
       }
       // K's pattern contains every S^T D S, so the symbolic analysis of K serves every factorisation.
       const SpMat A = p.K + weighted_gram(p.sampling.S, d, p.grid.unknowns());
-      factorize_timed(chol, A, seconds_factorize);
+      factorize_timed(chol, A, seconds_factorize, eps);
       ++r.factorizations;
       previous = active;
     }
     const VectorXd rhs = p.F + p.sampling.S.transpose() * d_phi;
-    if (step_and_check(chol, rhs, w, eps, r, o)) {
+    if (step_and_check(chol, rhs, w, eps, r, o, steps)) {
       r.converged = true;
       break;
     }
@@ -157,6 +183,11 @@ SolveResult solve(const Problem& p, const SolveOptions& o) {
     if (previous_level.size()) r.level_change = max_nodal_abs(res.w - previous_level);
     res.levels.push_back(r);
     std::ostringstream m;
+    if (!r.converged && !r.failure.empty()) {
+      m << to_string(o.scheme) << " scheme did not converge at eps = " << eps << ": " << r.failure;
+      res.message = m.str();
+      break;
+    }
     if (!r.converged) {
       m << to_string(o.scheme) << " scheme did not converge at eps = " << eps << ": " << o.max_iter
         << " iterations (max-iter) left a step of " << r.last_step << " > tol = " << o.tol;

@@ -32,6 +32,7 @@ struct LevelRecord {
   double last_step = 0;        // ||w^{n+1} - w^n||_C at the end of the level
   double level_change = -1;    // ||w^{eps_s} - w^{eps_{s-1}}||_C; -1 on the first level
   bool converged = false;
+  std::string failure;         // why the level stopped early: a non-finite iterate, or steps that stopped shrinking
 };
 
 struct SolveResult {

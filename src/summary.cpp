@@ -185,7 +185,8 @@ std::string summary_text(const Report& r) {
     for (const auto& l : s.levels) o << " " << num(l.eps) << ":" << l.iterations;
     o << "  total " << s.total_iterations() << "\n";
   }
-  o << "max w = " << num(e.max_w) << " at (" << num(f.x[e.argmax_w]) << ", " << num(f.y[e.argmax_w]) << ")\n";
+  o << "max w over the grid nodes = " << num(e.max_w) << " at (" << num(f.x[e.argmax_w]) << ", " << num(f.y[e.argmax_w])
+    << ")\n";
   for (const auto& [x, y] : r.points)
     o << "w(" << num(x) << ", " << num(y) << ") = " << num(evaluate(r.problem->grid, s.w, x, y).w) << "\n";
   o << "total contact force = " << num(total_contact_force(*r.problem, xi)) << ", max xi at nodes = "

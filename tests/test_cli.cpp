@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -134,4 +135,71 @@ TEST(Cli, DefaultsGiveACertifiedAnswer) {
       const PlateRun r = run_plate("-q -n " + std::to_string(n) + " " + obstacle);
       EXPECT_EQ(r.status, 0) << "n = " << n << " " << obstacle << "\n" << r.output;
     }
+}
+
+// An output named through a symlink lands in its target, which keeps its permissions and stays the
+// one file; a device is written to, never replaced by a regular file.
+TEST(Cli, OutputsKeepSymlinksPermissionsAndDevices) {
+  namespace fs = std::filesystem;
+  const fs::path target = temp_path("link_target.json"), link = temp_path("link.json");
+  fs::remove(target);
+  fs::remove(link);
+  { std::ofstream(target) << "old"; }
+  fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write);
+  fs::create_symlink(target, link);
+  ASSERT_EQ(run_plate("-q -n 4 --json " + link.string()).status, 0);
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
+  std::ifstream in(target);
+  std::stringstream js;
+  js << in.rdbuf();
+  EXPECT_NE(js.str().find("\"converged\": true"), std::string::npos);
+  EXPECT_EQ(fs::status(target).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
+  fs::remove(link);
+  fs::remove(target);
+  ASSERT_EQ(run_plate("-q -n 4 --csv /dev/null").status, 0);
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+}
+
+namespace {
+// max w and the total force from a run's JSON (the run's exit status as well).
+struct Answer {
+  int status;
+  double max_w, force;
+};
+Answer answer_of(const std::string& args) {
+  const std::string json = temp_path("scale_" + std::to_string(getpid()) + ".json");
+  std::filesystem::remove(json);
+  const PlateRun r = run_plate("-q " + args + " --json " + json);
+  std::ifstream in(json);
+  std::stringstream js;
+  js << in.rdbuf();
+  auto number = [&](const std::string& key) {
+    const auto at = js.str().find("\"" + key + "\": ");
+    return at == std::string::npos ? NAN : std::strtod(js.str().c_str() + at + key.size() + 4, nullptr);
+  };
+  return {r.status, number("max_w"), number("total_contact_force")};
+}
+}  // namespace
+
+// The same problem stated in millimetres, or with a 6250 times lower obstacle, must give the
+// answer scaled exactly: w by the length (or the height), the total force by length^-2 (or the
+// height). Tolerances and eps that were absolute would stop somewhere else.
+TEST(Cli, AnswerScalesWithUnitsAndHeightForEveryScheme) {
+  for (const std::string scheme : {"exact", "nonlinear", "linear"}) {
+    const std::string base = "-n 8 --scheme " + scheme + (scheme == "exact" ? "" : " --sampling gauss");
+    const Answer unit = answer_of(base);
+    const Answer mm = answer_of(base + " --lx 1000 --ly 1000 --radius 250 --centre 500,500 -R 62.5");
+    const Answer low = answer_of(base + " -R 1e-5");
+    SCOPED_TRACE(scheme);
+    EXPECT_EQ(mm.status, unit.status);
+    EXPECT_EQ(low.status, unit.status);
+    // A penalty force is eps^-1 (phi - S w): the rounding of phi, amplified by phi / (phi - S w), about
+    // 1e8 at eps = 1e-12, gives it a relative floor near 1e-8. The exact solver has no such loss; the
+    // JSON's 10 significant digits allow 5e-10 on each side of a ratio.
+    const double force_tol = scheme == "exact" ? 1e-9 : 1e-7;
+    EXPECT_NEAR(mm.max_w / unit.max_w / 1000.0, 1.0, 1e-9);
+    EXPECT_NEAR(mm.force / unit.force / 1e-3, 1.0, force_tol);
+    EXPECT_NEAR(low.max_w / unit.max_w / (1e-5 / 0.0625), 1.0, 1e-9);
+    EXPECT_NEAR(low.force / unit.force / (1e-5 / 0.0625), 1.0, force_tol);
+  }
 }
