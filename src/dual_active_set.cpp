@@ -5,8 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
-#include <sstream>
 
 #include "dual_qp.hpp"
 #include "schemes.hpp"
@@ -60,14 +58,14 @@ std::vector<int> violated_rows(const VectorXd& gap, const NodeSet& in_schur, dou
   return v;
 }
 
-double obstacle_scale(const Problem& p, const VectorXd& w0) {
-  double s = max_nodal_abs(w0);
+}  // namespace
+
+double answer_scale(const Problem& p, const VectorXd& w_free) {
+  double s = max_nodal_abs(w_free);
   for (int q = 0; q < p.phi.size(); ++q)
     if (std::isfinite(p.phi[q])) s = std::max(s, std::abs(p.phi[q]));
-  return std::max(s, 1e-300);
+  return s;
 }
-
-}  // namespace
 
 // @region rows-solver
 ExactResult solve_exact_rows(const Problem& p, const ExactOptions& o, const NodeSet& candidates) {
@@ -80,7 +78,7 @@ ExactResult solve_exact_rows(const Problem& p, const ExactOptions& o, const Node
   Cholesky chol;
   chol.factorize(p.K);
   const VectorXd w0 = chol.solve(p.F);  // the plate with no obstacle
-  const double slack = 0.1 * o.tol * obstacle_scale(p, w0);
+  const double slack = 0.1 * o.tol * std::max(answer_scale(p, w0), 1e-300);
   NodeSet in_schur(rows, 0);
   Schur schur;
   std::vector<int> fresh;

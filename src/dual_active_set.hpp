@@ -9,6 +9,11 @@ namespace plate {
 
 // `candidates` (one flag per sample row; empty: none) are the rows predicted to touch, for
 // instance by the solution on a coarser grid. Rows found violated later join them.
+// The size of the answer: the largest finite obstacle value at a sample, or the largest nodal value
+// of the free plate w_free = K^{-1} F if that is larger; 0 when both vanish. Tolerances relative to
+// it do not depend on the units of length or on the obstacle's height.
+double answer_scale(const Problem& p, const VectorXd& w_free);
+
 ExactResult solve_exact_rows(const Problem& p, const ExactOptions& o, const NodeSet& candidates);
 
 }  // namespace plate

@@ -2,6 +2,7 @@
 #include "grid.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -19,6 +20,9 @@ Grid make_grid(int nx, double lx, double ly) {
   if (g.ny < 1 || std::abs(cells - g.ny) > 1e-9 * cells)
     throw std::invalid_argument("ly (rectangle height) must be a whole number of cells of side h = lx/n; got ly/h = " +
                                 std::to_string(cells));
+  if (4.0 * (g.nx - 1) * (g.ny - 1) > std::numeric_limits<int>::max())
+    throw std::invalid_argument("n (cells along x): " + std::to_string(nx) + " x " + std::to_string(g.ny) +
+                                " cells have more unknowns than an int can count");
   return g;
 }
 

@@ -10,11 +10,11 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <limits>
 #include <sstream>
 
 #include "atomic_file.hpp"
 #include "contraction.hpp"
+#include "dual_active_set.hpp"
 #include "fields.hpp"
 #include "format.hpp"
 #include "stopwatch.hpp"
@@ -66,8 +66,8 @@ std::pair<double, double> parse_pair(const std::string& option, const std::strin
 }
 
 
-// Refuses grids with nothing to solve and grids that cannot fit: the sizes are counted in 64 bits,
-// and the memory estimate is the exact solver's measured peak per unknown (results/speed_vs_error.md:
+// Refuses grids with nothing to solve and grids that cannot fit (make_grid already refuses counts
+// beyond an int): the memory estimate is the exact solver's measured peak per unknown (results/speed_vs_error.md:
 // about 3.5 KiB at n = 1024) against this machine's physical memory.
 void check_grid_size(const plate::Grid& g) {
   const long long nodes = static_cast<long long>(g.nx - 1) * (g.ny - 1), unknowns = 4 * nodes;
@@ -76,7 +76,7 @@ void check_grid_size(const plate::Grid& g) {
                                 " has no interior node, so the clamped plate is w = 0 and there is nothing to solve "
                                 "(use at least 2 cells across each side)");
   const double need = unknowns * 3.5 * 1024, have = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
-  if (unknowns > std::numeric_limits<int>::max() || (have > 0 && need > have))
+  if (have > 0 && need > have)
     throw std::invalid_argument("--cells: " + std::to_string(unknowns) + " unknowns need about " +
                                 plate::fmt("%.3g", need / (1 << 30)) + " GiB, more than this machine's " +
                                 plate::fmt("%.3g", have / (1 << 30)) + " GiB");
@@ -95,17 +95,15 @@ void check_outputs(const std::vector<std::string>& paths) {
   }
 }
 
-// The size of the answer, for tolerances that do not depend on units: the largest obstacle value
-// at a sample, or the free plate's largest deflection if that is larger (one extra solve).
+// The size of the answer (answer_scale), with the free plate solved only when there is a load.
 double answer_scale(const plate::Problem& p) {
-  double s = 0;
-  for (int q = 0; q < p.phi.size(); ++q)
-    if (std::isfinite(p.phi[q])) s = std::max(s, std::abs(p.phi[q]));
+  plate::VectorXd w_free = plate::VectorXd::Zero(p.grid.unknowns());
   if (p.F.lpNorm<Eigen::Infinity>() > 0) {
     plate::Cholesky chol;
     chol.factorize(p.K);
-    s = std::max(s, plate::max_nodal_abs(chol.solve(p.F)));
+    w_free = chol.solve(p.F);
   }
+  const double s = plate::answer_scale(p, w_free);
   return s > 0 ? s : p.grid.lx();  // no obstacle and no load: w = 0; any length will do
 }
 

@@ -51,6 +51,15 @@ double on_edge(const Field& obstacle, const EdgePoints& e, int k, double h) {
   return v;
 }
 // @end edge-envelope
+
+// The obstacle must be a number or -inf (no constraint) wherever it is read.
+void check_obstacle_value(double x, double y, double v) {
+  if (std::isnan(v) || v == INFINITY) {
+    std::ostringstream m;
+    m << "obstacle must be a number or -inf (no constraint), but phi(" << x << ", " << y << ") = " << v;
+    throw std::invalid_argument(m.str());
+  }
+}
 }  // namespace
 
 Problem make_problem(const Grid& g, SamplingKind kind, const Field& obstacle, const Field& load) {
@@ -61,14 +70,7 @@ Problem make_problem(const Grid& g, SamplingKind kind, const Field& obstacle, co
 // samples would otherwise pass unseen and show up in the nodal output.
 void check_obstacle_at_nodes(const Grid& g, const Field& obstacle) {
   for (int j = 0; j <= g.ny; ++j)
-    for (int i = 0; i <= g.nx; ++i) {
-      const double v = obstacle(g.x(i), g.y(j));
-      if (std::isnan(v) || v == INFINITY) {
-        std::ostringstream m;
-        m << "obstacle must be a number or -inf (no constraint), but phi(" << g.x(i) << ", " << g.y(j) << ") = " << v;
-        throw std::invalid_argument(m.str());
-      }
-    }
+    for (int i = 0; i <= g.nx; ++i) check_obstacle_value(g.x(i), g.y(j), obstacle(g.x(i), g.y(j)));
 }
 
 Problem make_problem(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load) {
@@ -80,12 +82,7 @@ Problem make_problem(const Grid& g, const SamplingSpec& spec, const Field& obsta
   for (int i = 0; i < p.sampling.size(); ++i) {
     const int k = i - p.sampling.edge_begin;
     const double v = k >= 0 ? on_edge(obstacle, p.sampling.edge, k, g.h) : obstacle(p.sampling.x[i], p.sampling.y[i]);
-    if (std::isnan(v) || v == INFINITY) {
-      std::ostringstream m;
-      m << "obstacle must be a number or -inf (no constraint), but phi(" << p.sampling.x[i] << ", "
-        << p.sampling.y[i] << ") = " << v;
-      throw std::invalid_argument(m.str());
-    }
+    check_obstacle_value(p.sampling.x[i], p.sampling.y[i], v);
     p.phi[i] = v;
   }
   p.K = assemble_matrix(g, bfs_stiffness(g.h));

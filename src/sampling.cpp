@@ -76,19 +76,37 @@ Sampling grid_nodes(const Grid& g) {
 }
 // @end nodal-sampling
 
-// @region edge-sampling
-// Appends one row per edge point: the values of the element's 16 basis functions there, so that
-// (S w)_p = w_h(x_p) exactly. A point on an element side may use either element (w_h is C^1).
-void append_edge(const Grid& g, const EdgePoints& e, Sampling& s) {
-  const int first = s.size(), npts = first + e.size();
-  RowSpMat S(npts, g.unknowns());
-  S.reserve(static_cast<Eigen::Index>(s.S.nonZeros()) + 16L * e.size());
-  for (int p = 0; p < first; ++p) {
-    S.startVec(p);
-    for (RowSpMat::InnerIterator it(s.S, p); it; ++it) S.insertBack(p, it.col()) = it.value();
+// Copies the rows `keep` of s.S (with their points and weights) into a matrix with room for
+// `extra` more rows; the caller appends those.
+struct RowBuilder {
+  RowSpMat S;
+  VectorXd weights;
+  std::vector<double> x, y;
+  int next = 0;
+  RowBuilder(const Sampling& s, const std::vector<int>& keep, int extra)
+      : S(static_cast<Eigen::Index>(keep.size()) + extra, s.S.cols()), weights(keep.size() + extra) {
+    S.reserve(static_cast<Eigen::Index>(s.S.nonZeros()) + 16L * extra);
+    for (int p : keep) {
+      S.startVec(next);
+      for (RowSpMat::InnerIterator it(s.S, p); it; ++it) S.insertBack(next, it.col()) = it.value();
+      weights[next++] = s.weights[p];
+      x.push_back(s.x[p]);
+      y.push_back(s.y[p]);
+    }
   }
-  VectorXd weights(npts);
-  weights.head(first) = s.weights;
+};
+
+// @region edge-sampling
+// Keeps the interior rows farther than 1e-9 h from the curve (a node on the circle would repeat an
+// edge point) and appends one row per edge point: the values of the element's 16 basis functions
+// there, so that (S w)_p = w_h(x_p) exactly. A point on an element side may use either element
+// (w_h is C^1).
+void add_edge(const Grid& g, const EdgeCurve& curve, Sampling& s) {
+  const EdgePoints e = edge_points(curve, g.h);
+  std::vector<int> keep;
+  for (int p = 0; p < s.size(); ++p)
+    if (!(distance_to_edge(curve, s.x[p], s.y[p]) <= 1e-9 * g.h)) keep.push_back(p);
+  RowBuilder b(s, keep, e.size());
   std::vector<std::pair<int, double>> row;
   for (int k = 0; k < e.size(); ++k) {
     int ex, ey;
@@ -102,42 +120,20 @@ void append_edge(const Grid& g, const EdgePoints& e, Sampling& s) {
     for (int j = 0; j < 16; ++j)
       if (dofs[j] >= 0) row.emplace_back(dofs[j], v[j]);
     std::sort(row.begin(), row.end());
-    S.startVec(first + k);
-    for (const auto& [col, val] : row) S.insertBack(first + k, col) = val;
-    weights[first + k] = e.weight[k];
-    s.x.push_back(e.x[k]);
-    s.y.push_back(e.y[k]);
+    b.S.startVec(b.next);
+    for (const auto& [col, val] : row) b.S.insertBack(b.next, col) = val;
+    b.weights[b.next++] = e.weight[k];
+    b.x.push_back(e.x[k]);
+    b.y.push_back(e.y[k]);
   }
-  S.finalize();
-  s.S = std::move(S);
-  s.weights = std::move(weights);
-  s.edge_begin = first;
+  b.S.finalize();
+  s.S = std::move(b.S);
+  s.weights = std::move(b.weights);
+  s.x = std::move(b.x);
+  s.y = std::move(b.y);
   s.edge = e;
 }
 // @end edge-sampling
-
-// Keeps the rows whose point is farther than `distance` from the curve.
-void drop_rows_on(const EdgeCurve& e, double distance, Sampling& s) {
-  std::vector<int> keep;
-  for (int p = 0; p < s.size(); ++p)
-    if (!(distance_to_edge(e, s.x[p], s.y[p]) <= distance)) keep.push_back(p);
-  if (static_cast<int>(keep.size()) == s.size()) return;
-  RowSpMat S(static_cast<Eigen::Index>(keep.size()), s.S.cols());
-  VectorXd weights(keep.size());
-  std::vector<double> x, y;
-  for (size_t k = 0; k < keep.size(); ++k) {
-    S.startVec(static_cast<Eigen::Index>(k));
-    for (RowSpMat::InnerIterator it(s.S, keep[k]); it; ++it) S.insertBack(static_cast<Eigen::Index>(k), it.col()) = it.value();
-    weights[k] = s.weights[keep[k]];
-    x.push_back(s.x[keep[k]]);
-    y.push_back(s.y[keep[k]]);
-  }
-  S.finalize();
-  s.S = std::move(S);
-  s.weights = std::move(weights);
-  s.x = std::move(x);
-  s.y = std::move(y);
-}
 
 }  // namespace
 
@@ -145,10 +141,7 @@ Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge) 
   const bool gauss = kind == SamplingKind::Gauss || kind == SamplingKind::EdgeGauss;
   Sampling s = gauss ? gauss_points(g) : grid_nodes(g);
   s.kind = kind;
-  if (has_edge(kind) && !edge.empty()) {
-    drop_rows_on(edge, 1e-9 * g.h, s);
-    append_edge(g, edge_points(edge, g.h), s);
-  }
+  if (has_edge(kind) && !edge.empty()) add_edge(g, edge, s);
   s.edge_begin = s.size() - s.edge.size();
   return s;
 }

@@ -44,11 +44,16 @@ void factorize_timed(Cholesky& chol, const SpMat& A, double* seconds, double eps
   if (seconds) *seconds += seconds_since(t0);
 }
 
+// The last kWindow step sizes, in a ring, so a level of any length keeps only these.
+constexpr int kWindow = 1000;
+using StepWindow = std::vector<double>;
+
 // One step of a level: solve, measure the step in the C-norm, report, test the first stopping rule.
-// A non-finite iterate, or steps that no longer shrink at all (the last one not below the one 1000
-// steps before: slower than any contraction double precision can show), end the level at once with `failure` set: iterating on could only waste time.
+// A non-finite iterate, or steps that no longer shrink at all (the last one not below the one
+// kWindow steps before: slower than any contraction double precision can show), end the level at
+// once with `failure` set: iterating on could only waste time.
 bool step_and_check(const Cholesky& chol, const VectorXd& rhs, VectorXd& w, double eps, LevelRecord& r,
-                    const SolveOptions& o, std::vector<double>& steps) {
+                    const SolveOptions& o, StepWindow& steps) {
   VectorXd next = chol.solve(rhs);
   r.last_step = max_nodal_abs(next - w);
   w.swap(next);
@@ -58,14 +63,15 @@ bool step_and_check(const Cholesky& chol, const VectorXd& rhs, VectorXd& w, doub
     r.failure = "the iterate is not finite (NaN or inf) after " + std::to_string(r.iterations) + " steps";
     return false;
   }
-  steps.push_back(r.last_step);
-  constexpr size_t kWindow = 1000;
-  if (r.last_step > o.tol && steps.size() > kWindow && !(r.last_step < steps[steps.size() - 1 - kWindow])) {
+  if (steps.empty()) steps.assign(kWindow, INFINITY);
+  double& slot = steps[r.iterations % kWindow];  // holds the step kWindow iterations ago
+  if (r.last_step > o.tol && r.iterations > kWindow && !(r.last_step < slot)) {
     std::ostringstream m;
     m << "the steps stopped shrinking: step " << r.iterations << " is " << r.last_step << ", step "
-      << r.iterations - kWindow << " was " << steps[steps.size() - 1 - kWindow];
+      << r.iterations - kWindow << " was " << slot;
     r.failure = m.str();
   }
+  slot = r.last_step;
   return r.last_step <= o.tol;
 }
 // Why a run whose steps met the stopping rules is still not an answer.
@@ -96,7 +102,7 @@ LevelRecord linear_scheme_level(const Problem& p, double eps, VectorXd& w, Chole
   factorize_timed(chol, A, seconds_factorize, eps);
   r.factorizations = 1;
   const VectorXd scaled_w = p.sampling.weights / eps;
-  std::vector<double> steps;
+  StepWindow steps;
   while (r.iterations < o.max_iter && r.failure.empty()) {
     const VectorXd lifted = (p.sampling.S * w).cwiseMax(p.phi);  // w - beta(w) = max(w, phi)
     const VectorXd rhs = p.F + p.sampling.S.transpose() * scaled_w.cwiseProduct(lifted);
@@ -118,7 +124,7 @@ LevelRecord nonlinear_scheme_level(const Problem& p, double eps, VectorXd& w, Ch
   const int npts = p.sampling.size();
   Eigen::Matrix<bool, Eigen::Dynamic, 1> active, previous;
   VectorXd d(npts), d_phi(npts);
-  std::vector<double> steps;
+  StepWindow steps;
   while (r.iterations < o.max_iter && r.failure.empty()) {
     active = ((p.sampling.S * w) - p.phi).array() < 0.0;  // K(w^n) = 1 where w^n < phi
     if (r.iterations == 0 || active != previous) {

@@ -94,13 +94,12 @@ std::string line_force_json(const Report& r) {
   if (!f.theta.empty())
     o << ", \"q_fit_theta_0\": " << num(line_force_fit(f, 0)) << ", \"q_fit_theta_pi_4\": " << num(line_force_fit(f, M_PI / 4))
       << ", \"q_point_theta_0\": " << num(line_force_at(f, 0)) << ", \"q_point_theta_pi_4\": " << num(line_force_at(f, M_PI / 4));
-  o << ",\n    \"fourier_cos_4k_theta\": [";
-  for (size_t k = 0; k < f.fourier.size(); ++k) o << (k ? ", " : "") << num(f.fourier[k]);
-  o << "],\n    \"theta\": [";
-  for (size_t k = 0; k < f.theta.size(); ++k) o << (k ? ", " : "") << num(f.theta[k]);
-  o << "],\n    \"q\": [";
-  for (size_t k = 0; k < f.q.size(); ++k) o << (k ? ", " : "") << num(f.q[k]);
-  o << "]},\n";
+  for (const auto& [key, v] : {std::pair{"fourier_cos_4k_theta", &f.fourier}, {"theta", &f.theta}, {"q", &f.q}}) {
+    o << ",\n    \"" << key << "\": [";
+    for (size_t k = 0; k < v->size(); ++k) o << (k ? ", " : "") << num((*v)[k]);
+    o << "]";
+  }
+  o << "},\n";
   return o.str();
 }
 }  // namespace
