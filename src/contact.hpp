@@ -32,6 +32,11 @@ double total_contact_force(const Problem& p, const VectorXd& xi);
 // ||K w - F + eps^{-1} S^T W beta(S w)|| / (||K w|| + ||F||). Zero at the exact w_eps.
 double penalty_residual(const Problem& p, const VectorXd& w, double eps);
 
+// The same residual as a backward error: ||r||_inf over the inf-norm of the sum of the magnitudes
+// of its terms (|K||w| + |F| + the active penalty terms). Of the order of the unit round-off at an
+// exact w_eps, on every grid: a quantity whose digits below ~1e-13 round-off alone decides.
+double penalty_backward_error(const Problem& p, const VectorXd& w, double eps);
+
 // Everything the paper reports "at the nodes of the grid", at all (nx+1)(ny+1) nodes.
 // Second derivatives jump across element edges; at a node we average the elements around it.
 // The contact force at node r is (S^T W xi)_r / h^2, the force on its value unknown per unit

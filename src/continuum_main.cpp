@@ -4,6 +4,7 @@
 // continuum_limits.csv, continuum_timings.csv. Run by `make continuum`; `continuum --help` lists the options.
 #include <CLI/CLI.hpp>
 
+#include <cfloat>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -71,7 +72,33 @@ Row solve_one(SamplingKind kind, int n, const std::map<std::string, double>& pub
   return row;
 }
 
-std::string num(double v) { return std::isfinite(v) ? fmt("%.10g", v) : ""; }
+// The round-off of an exact solve grows with the conditioning of the grid. We bound it by
+// u n^3 relative: the same runs with one and with two BLAS threads differ by at most a sixth of
+// that to n = 512 (the most in the fitted q(pi/4); a three-hundredth in the deflections). No digit
+// below 10 times the bound is printed.
+double roundoff(int n, double v) { return DBL_EPSILON * std::pow(static_cast<double>(n), 3) * std::abs(v); }
+
+std::string num(double v, double noise) { return std::isfinite(v) ? fmt_above(v, noise, 10, 'g') : ""; }
+std::string num(const Row& r, double v) { return num(v, roundoff(r.n, v)); }
+
+std::vector<double> noise_column(const std::vector<Row>& rows, SamplingKind kind, double Row::*field) {
+  std::vector<double> z;
+  for (const Row& r : rows)
+    if (r.kind == kind) z.push_back(roundoff(r.n, r.*field));
+  return z;
+}
+
+// The bar as a number for programs: where it is within the noise, the noise's bound.
+std::string bar_number(const Extrapolation& e) {
+  const std::string b = fmt_above(e.bar, e.bar_noise, 3);
+  return b[0] == '<' ? b.substr(2) : b;
+}
+
+// A bar within the noise is reported as the noise's bound.
+std::string bar(const Extrapolation& e) {
+  const std::string b = fmt_above(e.bar, e.bar_noise, 2);
+  return b[0] == '<' ? b.substr(2) + " (round-off)" : b;
+}
 
 std::vector<double> column(const std::vector<Row>& rows, SamplingKind kind, double Row::*field) {
   std::vector<double> v;
@@ -85,14 +112,15 @@ std::string csv(const std::vector<Row>& rows) {
   o << "# continuum: the paper's problem (f = 0, R = 0.0625 on the disk of radius 0.25) solved exactly on n x n\n"
        "# grids, three samplings of the constraint; made by build/continuum. max_w and max_abs_m12 over the grid\n"
        "# nodes (nu = 0.3); mean_line_force = total_force / (2 pi r); q_fit: the line load on the rim\n"
-       "# fitted by cos(4 k theta), k = 0..3, at theta = 0 and pi/4 (edge only)\n"
+       "# fitted by cos(4 k theta), k = 0..3, at theta = 0 and pi/4 (edge only). Digits are printed down to\n"
+       "# 10 times the round-off bound, u n^3 relative; none that another machine could change\n"
        "sampling,n,unknowns,samples,edge_points,certified";
   for (const Quantity& q : kQuantities) o << "," << q.column;
   o << "\n";
   for (const Row& r : rows) {
     o << to_string(r.kind) << "," << r.n << "," << r.unknowns << "," << r.samples << "," << r.edge_points << ","
       << (r.certified ? 1 : 0);
-    for (const Quantity& q : kQuantities) o << "," << num(r.*q.field);
+    for (const Quantity& q : kQuantities) o << "," << num(r, r.*q.field);
     o << "\n";
   }
   return o.str();
@@ -112,8 +140,9 @@ std::string answer(const Study& s) {
   const Extrapolation& m = s.fits.at({SamplingKind::Edge, "mean line force"});
   std::ostringstream o;
   auto one = [](const Extrapolation& e) {
-    return fmt("%.9g", e.limit) + " +- " + fmt("%.1e", e.bar) +
-           (e.steady ? " (Richardson, order " + fmt("%.2f", e.orders.back()) + ")" : " (finest grid; the order is not steady)");
+    return fmt_above(e.limit, e.limit_noise, 9, 'g') + " +- " + bar(e) +
+           (e.steady ? " (Richardson, order " + format_order(e.orders.back(), e.order_noise.back()) + ")"
+                     : " (finest grid; the order is not steady)");
   };
   o << "**The continuum answer** (edge sampling, exact solves on n = " << s.grids.front() << " ... " << s.grids.back()
     << "): max w = " << one(w) << ", total contact force = " << one(f) << ", mean line force on the rim = " << one(m)
@@ -138,7 +167,7 @@ std::string markdown(const Study& s) {
     for (const Row& r : s.rows) {
       if (r.kind != k) continue;
       o << "| " << r.n << " | " << r.unknowns << " | " << r.samples << " | " << (r.certified ? "yes" : "**no**");
-      for (const Quantity& q : kQuantities) o << " | " << (std::isfinite(r.*q.field) ? num(r.*q.field) : "n/a");
+      for (const Quantity& q : kQuantities) o << " | " << (std::isfinite(r.*q.field) ? num(r, r.*q.field) : "n/a");
       o << " |\n";
     }
     o << "\n";
@@ -155,7 +184,7 @@ std::string markdown(const Study& s) {
       const Extrapolation& e = s.fits.at({k, q.name});
       if (e.orders.empty()) continue;
       o << "| " << q.name << " | " << to_string(k) << " | ";
-      for (size_t i = 0; i < e.orders.size(); ++i) o << (i ? ", " : "") << (std::isfinite(e.orders[i]) ? fmt("%.2f", e.orders[i]) : "-");
+      for (size_t i = 0; i < e.orders.size(); ++i) o << (i ? ", " : "") << format_order(e.orders[i], e.order_noise[i]);
       o << " | " << e.verdict << " |\n";
     }
   return o.str();
@@ -166,14 +195,16 @@ std::string limits(const Study& s) {
   std::ostringstream o;
   o << "# continuum: Richardson limits (edge sampling rows are the continuum answer); made by build/continuum\n"
        "# steady: 1 if the last two observed orders differ by at most 0.3, and then limit is Richardson's and bar its\n"
-       "# distance to the previous Richardson limit; 0: limit is the finest value and bar its last increment\n"
+       "# distance to the previous Richardson limit; 0: limit is the finest value and bar its last increment.\n"
+       "# A bar within 10 times the round-off bound (u n^3 relative) is that bound instead\n"
        "quantity,sampling,steady,order,limit,bar\n";
   for (const Quantity& q : kQuantities)
     for (SamplingKind k : kKinds) {
       const Extrapolation& e = s.fits.at({k, q.name});
       if (e.orders.empty()) continue;
       o << q.column << "," << to_string(k) << "," << (e.steady ? 1 : 0) << ","
-        << (e.steady ? fmt("%.3f", e.orders.back()) : "") << "," << num(e.limit) << "," << fmt("%.2e", e.bar) << "\n";
+        << (e.steady ? format_order(e.orders.back(), e.order_noise.back()) : "") << "," << num(e.limit, e.limit_noise)
+        << "," << bar_number(e) << "\n";
     }
   return o.str();
 }
@@ -183,23 +214,32 @@ std::string errors(const Study& s) {
   std::ostringstream o;
   o << "# continuum: |value - edge limit| / |edge limit| for max w and the total force; made by build/continuum\n"
        "sampling,n,h,err_max_w,err_total_force\n";
-  const double w = s.fits.at({SamplingKind::Edge, "max w"}).limit, f = s.fits.at({SamplingKind::Edge, "total force"}).limit;
+  const Extrapolation &W = s.fits.at({SamplingKind::Edge, "max w"}), &F = s.fits.at({SamplingKind::Edge, "total force"});
+  const double w = W.limit, f = F.limit;
   for (const Row& r : s.rows)
-    o << to_string(r.kind) << "," << r.n << "," << num(1.0 / r.n) << "," << fmt("%.4e", std::abs(r.max_w - w) / w) << ","
-      << fmt("%.4e", std::abs(r.force - f) / f) << "\n";
+    o << to_string(r.kind) << "," << r.n << "," << fmt("%.10g", 1.0 / r.n) << ","
+      << fmt_above(std::abs(r.max_w - w) / w, (roundoff(r.n, r.max_w) + W.limit_noise) / w, 5) << ","
+      << fmt_above(std::abs(r.force - f) / f, (roundoff(r.n, r.force) + F.limit_noise) / f, 5) << "\n";
   return o.str();
 }
 
+// Point values of q scatter more than its aggregates (up to 3 u n^3 max q between BLAS thread
+// counts), and a file of N values stays the same only if each one's odds of changing are well
+// under 1/N: so each is printed above N times the bound, and only grids up to n = 256 are kept,
+// where that still leaves four digits for the plot.
 std::string line_loads(const Study& s) {
   std::ostringstream o;
-  o << "# continuum: the line load q (force per unit length) at the rim points, edge sampling; made by build/continuum\n"
+  o << "# continuum: the line load q (force per unit length) at the rim points, edge sampling, n = 32 ... 256;\n"
+       "# made by build/continuum. Printed to the digits round-off leaves the same on every machine\n"
        "n,theta,q\n";
   bool first = true;
   for (const Row& r : s.rows)
-    if (r.kind == SamplingKind::Edge && r.n >= 32) {
+    if (r.kind == SamplingKind::Edge && r.n >= 32 && r.n <= 256) {
       if (!first) o << "\n\n";  // gnuplot: one data block per grid
       first = false;
-      for (size_t k = 0; k < r.line.q.size(); ++k) o << r.n << "," << num(r.line.theta[k]) << "," << num(r.line.q[k]) << "\n";
+      const double noise = roundoff(r.n, r.line.max) * static_cast<double>(r.line.q.size());
+      for (size_t k = 0; k < r.line.q.size(); ++k)
+        o << r.n << "," << fmt("%.10g", r.line.theta[k]) << "," << num(r.line.q[k], noise) << "\n";
     }
   return o.str();
 }
@@ -232,7 +272,8 @@ int main(int argc, char** argv) {
         timings << to_string(k) << "," << n << "," << fmt("%.3g", s.rows.back().seconds) << "\n";
       }
     for (const Quantity& q : kQuantities)
-      for (SamplingKind k : kKinds) s.fits[{k, q.name}] = extrapolate(column(s.rows, k, q.field));
+      for (SamplingKind k : kKinds)
+        s.fits[{k, q.name}] = extrapolate(column(s.rows, k, q.field), noise_column(s.rows, k, q.field));
     write_file_atomically(out + "/continuum.csv", csv(s.rows));
     write_file_atomically(out + "/continuum_error.csv", errors(s));
     write_file_atomically(out + "/continuum_q.csv", line_loads(s));

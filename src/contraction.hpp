@@ -29,15 +29,23 @@ double paper_rho(double c, double eps);
 // ||v||_M = ||S v||_W, the norm in which the contraction is proved (the L2 norm for Gauss sampling).
 double m_norm(const Problem& p, const VectorXd& v);
 
-// ||w^{n+1} - w^n||_M for n = 0 .. iterations - 1 of the linear scheme at fixed eps, from w^0 = 0.
-std::vector<double> linear_step_norms(const Problem& p, double eps, int iterations);
+// ||w^{n+1} - w^n||_M for n = 0 .. iterations - 1 of the linear scheme at fixed eps, from w^0 = 0;
+// the last iterate in *last_iterate if given.
+std::vector<double> linear_step_norms(const Problem& p, double eps, int iterations, VectorXd* last_iterate = nullptr);
+
+// The factor by which (5a) shrinks the difference of two runs once both have settled on the
+// contact set of w (its asymptotic contraction there), to full precision by a rescaled difference.
+// With no contact it is the sharp factor 1/(1 + eps lambda_1h), measured rather than derived.
+double settled_factor(const Problem& p, double eps, const VectorXd& w, int max_iter = 20000);
 
 // The factor per step read off a sequence of step norms where they have fallen to 1e-7 of the
 // first: the faster modes have died out (relative to the first they shrink by
 // (1 + eps l1) / (1 + eps l2) per step) and rounding has not yet set in.
 double asymptotic_factor(const std::vector<double>& steps);
 
-// The largest ratio of successive steps while they are above 1e-12 of the first.
-double slowest_factor(const std::vector<double>& steps);
+// The largest ratio of successive steps, over the steps above 1e-6 of the first (below that, round-off
+// in the iterates starts to show in the ratios, in the 9th digit), and the settled factor, which
+// holds for all the steps after.
+double slowest_factor(const std::vector<double>& steps, double settled);
 
 }  // namespace plate

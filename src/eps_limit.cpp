@@ -1,6 +1,7 @@
 // Exact discrete penalised solutions along eps_s = 10^{-s}, and their Richardson extrapolation.
 #include "eps_limit.hpp"
 
+#include <cfloat>
 #include <cmath>
 #include <stdexcept>
 
@@ -36,10 +37,29 @@ EpsLimit eps_limit(const Problem& p, double eps) {
   EpsLimit L;
   L.eps = eps;
   L.w = w0 + (w0 - w1) / 9.0;
-  L.ratio = max_nodal_abs(w1 - w2) / max_nodal_abs(w0 - w1);
+  L.difference = max_nodal_abs(w0 - w1);
+  L.ratio = max_nodal_abs(w1 - w2) / L.difference;
   L.estimate = max_nodal_abs(L.w - (w1 + (w1 - w2) / 9.0));
+  L.roundoff = solve_roundoff(p, w0, eps);
   return L;
 }
 // @end eps-limit
+
+// @region solve-roundoff
+// A backward-stable solve of A w = b returns the exact solution of a system perturbed by about
+// u |A| |w| + u |b|; pushed through A^{-1} that perturbation is the round-off of w. An estimate of
+// its size, not a bound: the perturbation's signs are taken all alike.
+double solve_roundoff(const Problem& p, const VectorXd& w, double eps) {
+  const VectorXd active = ((p.sampling.S * w - p.phi).array() < 0.0).cast<double>();
+  const VectorXd d = active.cwiseProduct(p.sampling.weights) / eps;
+  const SpMat A = p.K + weighted_gram(p.sampling.S, d, p.grid.unknowns());
+  const VectorXd d_phi = (active.array() > 0).select(d.cwiseProduct(p.phi), 0.0);  // phi = -inf off the obstacle
+  const VectorXd b = p.F + p.sampling.S.transpose() * d_phi;
+  Cholesky chol;
+  chol.factorize(A);
+  const VectorXd perturbation = DBL_EPSILON * (A.cwiseAbs() * w.cwiseAbs() + b.cwiseAbs());
+  return max_nodal_abs(chol.solve(perturbation));
+}
+// @end solve-roundoff
 
 }  // namespace plate

@@ -16,7 +16,10 @@ struct EpsLimit {
   VectorXd w;          // the extrapolated limit
   double eps = 0;      // smallest eps used
   double ratio = 0;    // ||w_{10 eps} - w_{100 eps}||_C / ||w_eps - w_{10 eps}||_C: 10 when linear in eps
+  double difference = 0;  // ||w_eps - w_{10 eps}||_C, the smaller term of the ratio
   double estimate = 0; // ||limit from (eps, 10 eps) - limit from (10 eps, 100 eps)||_C
+  double roundoff = 0; // round-off in w_eps at the nodes (solve_roundoff): what a machine that
+                       // rounds differently may change in the path, and so in the limit
 };
 
 // w_eps = w + eps z + O(eps^2) (the discrete penalty error is linear in eps, which `ratio`
@@ -25,5 +28,9 @@ struct EpsLimit {
 // K + eps^{-1} S^T W S spoils the linear trend on coarse grids with Gauss sampling).
 // Throws std::runtime_error if some level does not converge.
 EpsLimit eps_limit(const Problem& p, double eps = 1e-12);
+
+// The size of the round-off in the nodal values of the exact w_eps when it is computed as w by a
+// backward-stable solve (Cholesky) of the penalised system at w's active set.
+double solve_roundoff(const Problem& p, const VectorXd& w, double eps);
 
 }  // namespace plate

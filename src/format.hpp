@@ -1,5 +1,8 @@
-// printf-style formatting of one number, for the tables and reports the programs write.
+// printf-style formatting of one number, for the tables and reports the programs write, and the
+// rule that keeps those tables the same on every machine: print no digit that round-off decides.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -9,4 +12,31 @@ inline std::string fmt(const char* format, double v) {
   std::snprintf(b, sizeof b, format, v);
   return b;
 }
+
+// v rounded up to one significant digit: a bound stays a bound when it is printed.
+inline std::string fmt_up(double v) {
+  if (!(v > 0) || !std::isfinite(v)) return fmt("%.0e", v);
+  const double p = std::pow(10.0, std::floor(std::log10(v)));
+  double lead = std::ceil(v / p * (1 - 1e-12));  // 3e-11 stays 3e-11 when it is exact
+  return fmt("%.0e", lead * p);
+}
+
+// @region fmt-above
+// v to the digits that `noise` (a bound on what round-off, or another machine, may change in it)
+// cannot reach: the last digit printed is at least 10 times the noise, and at most `max_digits`
+// significant digits. A v within 10 noise of zero is printed as the bound "< 10 noise".
+// style 'e' prints 2.1e-06; 'g' prints as %g does (0.0976920952).
+inline std::string fmt_above(double v, double noise, int max_digits, char style = 'e') {
+  if (!std::isfinite(v)) return fmt("%g", v);
+  int digits = max_digits;
+  if (noise > 0) {
+    if (!(std::abs(v) >= 10 * noise)) return "< " + fmt_up(10 * noise);
+    // the last digit printed, 10^(e - digits + 1) with e the exponent of v, is at least 10 noise
+    digits = static_cast<int>(std::floor(std::log10(std::abs(v))) - std::ceil(std::log10(10 * noise))) + 1;
+  }
+  digits = std::clamp(digits, 1, max_digits);
+  const std::string f = style == 'g' ? "%." + std::to_string(digits) + "g" : "%." + std::to_string(digits - 1) + "e";
+  return fmt(f.c_str(), v);
+}
+// @end fmt-above
 }  // namespace plate

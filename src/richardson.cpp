@@ -20,28 +20,56 @@ double richardson(double b, double c, double p) { return c + (c - b) / (std::pow
 
 // @region richardson
 // Eq. (D16): observed orders, and the limit where the order is steady over the last four grids.
-Extrapolation extrapolate(const std::vector<double>& v, double spread) {
+Extrapolation extrapolate(const std::vector<double>& v, const std::vector<double>& noise, double spread) {
   Extrapolation e;
   const int m = static_cast<int>(v.size());
-  for (int k = 0; k + 2 < m; ++k) e.orders.push_back(order(v[k], v[k + 1], v[k + 2]));
+  auto z = [&](int k) { return noise.empty() ? 0.0 : noise[k]; };
+  for (int k = 0; k + 2 < m; ++k) {
+    e.orders.push_back(order(v[k], v[k + 1], v[k + 2]));
+    // p = log2(d1 / d2): each increment carries the noise of its two ends.
+    e.order_noise.push_back(((z(k) + z(k + 1)) / std::abs(v[k + 1] - v[k]) +
+                             (z(k + 1) + z(k + 2)) / std::abs(v[k + 2] - v[k + 1])) / std::log(2.0));
+  }
   const int t = static_cast<int>(e.orders.size());
-  if (m >= 2) e.limit = v[m - 1], e.bar = std::abs(v[m - 1] - v[m - 2]);
-  const std::string fallback = "; finest value " + fmt("%.10g", e.limit) + " +- " + fmt("%.1e", e.bar) + " (last increment)";
+  if (m >= 2) {
+    e.limit = v[m - 1], e.bar = std::abs(v[m - 1] - v[m - 2]);
+    e.limit_noise = z(m - 1), e.bar_noise = z(m - 1) + z(m - 2);
+  }
+  const std::string fallback = "; finest value " + fmt_above(e.limit, e.limit_noise, 10, 'g') + " +- " +
+                               fmt_above(e.bar, e.bar_noise, 2) + " (last increment)";
   if (t < 2 || !std::isfinite(e.orders[t - 1]) || !std::isfinite(e.orders[t - 2])) {
     e.verdict = (t < 2 ? "too few grids" : "not steady: the last increments change sign or grow") + fallback;
     return e;
   }
   const double p = e.orders[t - 1], q = e.orders[t - 2];
   if (std::abs(p - q) > spread) {
-    e.verdict = "not steady: the last two orders are " + fmt("%.2f", q) + " and " + fmt("%.2f", p) + fallback;
+    e.verdict = "not steady: the last two orders are " + format_order(q, e.order_noise[t - 2]) + " and " +
+                format_order(p, e.order_noise[t - 1]) + fallback;
     return e;
   }
   e.steady = true;
   e.limit = richardson(v[m - 2], v[m - 1], p);
   e.bar = std::abs(e.limit - richardson(v[m - 3], v[m - 2], q));
-  e.verdict = "order " + fmt("%.2f", p) + ", limit " + fmt("%.10g", e.limit) + " +- " + fmt("%.1e", e.bar);
+  // The limit moves with c and b, and with p through 1 / (2^p - 1).
+  auto limit_noise = [&](int b, int c, double order, double order_noise) {
+    const double g = std::pow(2.0, order) - 1;
+    return z(c) + (z(c) + z(b)) / g + std::abs(v[c] - v[b]) * (g + 1) * std::log(2.0) / (g * g) * order_noise;
+  };
+  e.limit_noise = limit_noise(m - 2, m - 1, p, e.order_noise[t - 1]);
+  e.bar_noise = e.limit_noise + limit_noise(m - 3, m - 2, q, e.order_noise[t - 2]);
+  e.verdict = "order " + format_order(p, e.order_noise[t - 1]) + ", limit " + fmt_above(e.limit, e.limit_noise, 10, 'g') +
+              " +- " + fmt_above(e.bar, e.bar_noise, 2);
   return e;
 }
+// @end richardson
+
+std::string format_order(double p, double noise) {
+  if (!std::isfinite(p)) return "-";
+  const int decimals = noise > 0 ? static_cast<int>(std::floor(-std::log10(10 * noise))) : 2;
+  if (decimals < 0) return "~" + fmt("%.0f", p) + " (round-off)";
+  return fmt(("%." + std::to_string(std::min(decimals, 2)) + "f").c_str(), p);
+}
+
 // @end richardson
 
 }  // namespace plate

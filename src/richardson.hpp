@@ -13,10 +13,18 @@ struct Extrapolation {
   // before. Not steady: the finest value, and the last increment (the error of the finest value if
   // the increments from there on at least halve each time, which nothing here can check).
   double limit = 0, bar = 0;
-  std::string verdict;  // one line for a report
+  // What the round-off of the values (the `noise` passed in) can change in each of the above.
+  std::vector<double> order_noise;
+  double limit_noise = 0, bar_noise = 0;
+  std::string verdict;  // one line for a report, printed to the digits the noise leaves
 };
 
 // Eq. (D16): v_h = v + C h^p + ..., p from successive increments, v ~ v_h/4 + d / (2^p - 1).
-Extrapolation extrapolate(const std::vector<double>& values, double spread = 0.3);
+// noise[k] bounds the round-off in values[k] (empty: none).
+Extrapolation extrapolate(const std::vector<double>& values, const std::vector<double>& noise = {},
+                          double spread = 0.3);
+
+// An order to the decimals (at most 2) its noise leaves, or "-" where it is undefined.
+std::string format_order(double p, double noise);
 
 }  // namespace plate

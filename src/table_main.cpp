@@ -38,13 +38,17 @@ Run run(const Problem& p, Scheme scheme, double tol, const EpsLimit& limit, doub
   x.converged = r.stopped;  // the paper's rules; the error column says how good that was
   x.last_step = r.levels.back().last_step;
   x.error = max_nodal_abs(r.w - limit.w);
-  x.residual = penalty_residual(p, r.w, r.eps);
+  x.residual = penalty_backward_error(p, r.w, r.eps);
   // A posteriori: steps of (5a) shrink at least by q = 1/(1 + eps lambda_1h), so the distance to
   // w_eps is at most q/(1-q) = 1/(eps lambda_1h) times the last step (in the M-norm; we apply
   // it to the C-norm step as an estimate). (3a) reaches w_eps exactly: no such term.
   x.estimate = scheme == Scheme::Linear ? x.last_step / (r.eps * lambda1h) : 0.0;
   return x;
 }
+
+// A backward-stable solve leaves a backward error of a few units of round-off (2.2e-16); (3a) at
+// its exact w_eps shows at most 4e-16 on every grid of the table.
+constexpr double kBackwardErrorFloor = 1e-14;
 
 struct Case {
   int n;
@@ -56,12 +60,40 @@ struct Case {
 
 std::string yes_no(bool b) { return b ? "yes" : "**no**"; }
 
+// What another machine may change in a case's numbers. The iterates and the path carry the round-off
+// of a solve (EpsLimit::roundoff); the errors carry, besides, the reference's own error.
+struct Noise {
+  double w, reference;
+};
+Noise noise(const Case& c) { return {c.limit.roundoff, c.limit.estimate + c.limit.roundoff}; }
+
+// The estimate is a difference of two extrapolations, each carrying the path's round-off: it is
+// printed to the digits above that round-off, and as a bound where round-off is all it is.
+std::string reference_error(const EpsLimit& L) {
+  const std::string e = fmt_above(L.estimate, L.roundoff, 2);
+  return e[0] == '<' ? e : "<= " + e;
+}
+
+// The ratio of two differences of the path, each uncertain by twice the round-off of a solution.
+std::string eps_ratio(const EpsLimit& L) {
+  const double relative = 2 * L.roundoff * (1 / (L.ratio * L.difference) + 1 / L.difference);
+  const int decimals = static_cast<int>(std::floor(-std::log10(10 * L.ratio * relative)));
+  if (decimals < 0) return "undetermined (round-off)";
+  return fmt(("%." + std::to_string(std::min(decimals, 3)) + "f").c_str(), L.ratio);
+}
+
+// The a-posteriori estimate is zero by construction for (3a): printed as such, not as a bound.
+std::string estimate(const Run& r, double w_noise, double lambda1h, int digits) {
+  return r.estimate == 0 ? "0" : fmt_above(r.estimate, w_noise / (r.eps * lambda1h), digits);
+}
+
 std::string markdown(const std::vector<Case>& cases, const std::vector<PublishedRow>& table, bool with_paper) {
   std::ostringstream md;
   for (const Case& c : cases) {
+    const Noise z = noise(c);
     md << "\n**h = 1/" << c.n << ", " << to_string(c.kind) << " sampling** (" << 4 * (c.n - 1) * (c.n - 1)
-       << " unknowns; lambda_1h = " << fmt("%.4f", c.lambda1h) << "; reference error <= "
-       << fmt("%.1e", c.limit.estimate) << ", eps-ratio " << fmt("%.3f", c.limit.ratio) << ")\n\n";
+       << " unknowns; lambda_1h = " << fmt("%.4f", c.lambda1h) << "; reference error " << reference_error(c.limit)
+       << ", eps-ratio " << eps_ratio(c.limit) << ")\n\n";
     md << "| OS |" << (with_paper ? " paper (5a) | GLT |" : "")
        << " (5a) iterations | final eps | last step | error | estimate | stopped | (3a) iterations | final eps | error |\n";
     md << "|---:|" << (with_paper ? "---:|---:|" : "") << "---:|---:|---:|---:|---:|:---:|---:|---:|---:|\n";
@@ -69,10 +101,10 @@ std::string markdown(const std::vector<Case>& cases, const std::vector<Published
       const Run &l = c.runs[i].first, &nl = c.runs[i].second;
       md << "| " << fmt("%.3g", table[i].tolerance) << " |";
       if (with_paper) md << " " << table[i].iterations << " | " << table[i].iterations_glt << " |";
-      md << " " << l.iterations << " | " << fmt("%.0e", l.eps) << " | " << fmt("%.1e", l.last_step) << " | "
-         << fmt("%.1e", l.error) << " | " << fmt("%.1e", l.estimate) << " | " << yes_no(l.converged) << " | "
-         << nl.iterations << (nl.converged ? "" : " (no)") << " | " << fmt("%.0e", nl.eps) << " | "
-         << fmt("%.1e", nl.error) << " |\n";
+      md << " " << l.iterations << " | " << fmt("%.0e", l.eps) << " | " << fmt_above(l.last_step, z.w, 2) << " | "
+         << fmt_above(l.error, z.reference, 2) << " | " << estimate(l, z.w, c.lambda1h, 2) << " | "
+         << yes_no(l.converged) << " | " << nl.iterations << (nl.converged ? "" : " (no)") << " | "
+         << fmt("%.0e", nl.eps) << " | " << fmt_above(nl.error, z.reference, 2) << " |\n";
     }
   }
   return md.str();
@@ -85,11 +117,13 @@ std::string csv(const std::vector<Case>& cases, const std::vector<PublishedRow>&
        "# Columns: n (h = 1/n), sampling, tolerance OS, paper/GLT iterations (published, h = 1/4 only),\n"
        "# scheme, iterations (all eps levels), final eps, converged (both rules met before eps-min = 1e-12),\n"
        "# last_step = ||w^{n+1} - w^n||_C at the stop, error = ||w - w_ref||_C at the nodes against the eps -> 0\n"
-       "# limit w_ref, estimate = last_step / (eps lambda_1h) (linear scheme only), residual = relative residual\n"
-       "# of the discrete (2a) at the final eps.\n";
+       "# limit w_ref, estimate = last_step / (eps lambda_1h) (linear scheme only), residual = backward error\n"
+       "# of the discrete (2a) at the final eps (the residual over the size of its terms). Digits that round-off\n"
+       "# could change are not printed: a value within 10 times its round-off floor reads \"< bound\".\n";
   o << "n,sampling,tolerance,paper_iterations,glt_iterations,scheme,iterations,final_eps,converged,last_step,error,"
        "estimate,residual\n";
-  for (const Case& c : cases)
+  for (const Case& c : cases) {
+    const Noise z = noise(c);
     for (std::size_t i = 0; i < table.size(); ++i)
       for (int k = 0; k < 2; ++k) {
         const Run& r = k == 0 ? c.runs[i].first : c.runs[i].second;
@@ -97,9 +131,10 @@ std::string csv(const std::vector<Case>& cases, const std::vector<PublishedRow>&
           << (c.n == 4 ? std::to_string(table[i].iterations) : "") << ","
           << (c.n == 4 ? std::to_string(table[i].iterations_glt) : "") << "," << (k == 0 ? "linear" : "nonlinear")
           << "," << r.iterations << "," << fmt("%.0e", r.eps) << "," << (r.converged ? 1 : 0) << ","
-          << fmt("%.3e", r.last_step) << "," << fmt("%.3e", r.error) << "," << fmt("%.3e", r.estimate) << ","
-          << fmt("%.3e", r.residual) << "\n";
+          << fmt_above(r.last_step, z.w, 4) << "," << fmt_above(r.error, z.reference, 4) << ","
+          << estimate(r, z.w, c.lambda1h, 4) << "," << fmt_above(r.residual, kBackwardErrorFloor, 4) << "\n";
       }
+  }
   return o.str();
 }
 }  // namespace

@@ -50,13 +50,47 @@ TEST(Contraction, WithoutContactTheLinearSchemeContractsByOneOverOnePlusEpsLambd
   }
 }
 
+TEST(Contraction, ARescaledDifferenceGivesTheSharpFactorToRoundOff) {
+  // Without contact the settled factor is the largest eigenvalue of (K + M/eps)^{-1} M/eps, found by
+  // a power iteration; lambda_1h comes from an inverse iteration on K^{-1} M. The two agree to the
+  // round-off of the iterations, where the runs' step ratios agree only to 1e-6.
+  for (SamplingKind kind : {SamplingKind::Gauss, SamplingKind::Nodes}) {
+    const Problem p = make_problem(make_grid(8), kind, [](double, double) { return -1.0; },
+                                   [](double, double) { return 1.0; });
+    const double lambda = smallest_eigenpair(p.K, p.M).lambda;
+    for (double eps : {1e-2, 1e-3, 1e-4})
+      EXPECT_NEAR(settled_factor(p, eps, VectorXd::Zero(p.grid.unknowns())), sharp_contraction(lambda, eps),
+                  1e-11 * sharp_contraction(lambda, eps))
+          << to_string(kind) << " eps = " << eps;
+  }
+}
+
+TEST(Contraction, OnTheContactSetTheSettledFactorIsBelowTheFreeOne) {
+  // Samples in contact stop feeding the difference back (max(s, phi) is flat there), so the
+  // settled factor with the paper's obstacle is smaller than without it, and is what the run's
+  // late step ratios tend to.
+  const Problem p = paper_problem(8, SamplingKind::Nodes);
+  const double lambda = smallest_eigenpair(p.K, p.M).lambda;
+  const double eps = 1e-3;
+  VectorXd last;
+  const std::vector<double> steps = linear_step_norms(p, eps, 60, &last);
+  const double settled = settled_factor(p, eps, last);
+  EXPECT_LT(settled, sharp_contraction(lambda, eps));
+  size_t k = 1;  // the last ratio of steps that round-off has not reached
+  while (k + 1 < steps.size() && steps[k + 1] > 1e-8 * steps[0]) ++k;
+  ASSERT_GT(k, 5u);
+  EXPECT_NEAR(steps[k] / steps[k - 1], settled, 1e-5 * settled) << "at step " << k;
+}
+
 TEST(Contraction, WithContactNoStepIsSlowerThanTheBound) {
   for (SamplingKind kind : {SamplingKind::Gauss, SamplingKind::Nodes}) {
     const Problem p = paper_problem(8, kind);
     const double lambda = smallest_eigenpair(p.K, p.M).lambda;
     for (double eps : {1e-3, 1e-4}) {
       const double q = sharp_contraction(lambda, eps);
-      const double worst = slowest_factor(linear_step_norms(p, eps, 200));
+      VectorXd last;
+      const std::vector<double> steps = linear_step_norms(p, eps, 200, &last);
+      const double worst = slowest_factor(steps, settled_factor(p, eps, last));
       std::printf("  %s eps = %g: slowest step ratio %.9f, bound %.9f\n", to_string(kind), eps, worst, q);
       // Active points contract faster (max(s, phi) is flat there), so the bound need not be attained.
       EXPECT_LE(worst, q * (1 + 1e-9));
