@@ -89,16 +89,13 @@ std::vector<double> noise_column(const std::vector<Row>& rows, SamplingKind kind
 }
 
 // The bar as a number for programs: where it is within the noise, the noise's bound.
-std::string bar_number(const Extrapolation& e) {
-  const std::string b = fmt_above(e.bar, e.bar_noise, 3);
+std::string bar_number(const Extrapolation& e, int digits = 3) {
+  const std::string b = fmt_above(e.bar, e.bar_noise, digits);
   return b[0] == '<' ? b.substr(2) : b;
 }
 
-// A bar within the noise is reported as the noise's bound.
-std::string bar(const Extrapolation& e) {
-  const std::string b = fmt_above(e.bar, e.bar_noise, 2);
-  return b[0] == '<' ? b.substr(2) + " (round-off)" : b;
-}
+// A bar within the noise is reported as the noise's bound, and said to be one.
+bool bar_is_roundoff(const Extrapolation& e) { return fmt_above(e.bar, e.bar_noise, 2)[0] == '<'; }
 
 std::vector<double> column(const std::vector<Row>& rows, SamplingKind kind, double Row::*field) {
   std::vector<double> v;
@@ -140,9 +137,10 @@ std::string answer(const Study& s) {
   const Extrapolation& m = s.fits.at({SamplingKind::Edge, "mean line force"});
   std::ostringstream o;
   auto one = [](const Extrapolation& e) {
-    return fmt_above(e.limit, e.limit_noise, 9, 'g') + " +- " + bar(e) +
-           (e.steady ? " (Richardson, order " + format_order(e.orders.back(), e.order_noise.back()) + ")"
-                     : " (finest grid; the order is not steady)");
+    return fmt_above(e.limit, e.limit_noise, 9, 'g') + " +- " + bar_number(e, 2) + " (" +
+           (bar_is_roundoff(e) ? "the round-off bound; " : "") +
+           (e.steady ? "Richardson, order " + format_order(e.orders.back(), e.order_noise.back())
+                     : "finest grid; the order is not steady") + ")";
   };
   o << "**The continuum answer** (edge sampling, exact solves on n = " << s.grids.front() << " ... " << s.grids.back()
     << "): max w = " << one(w) << ", total contact force = " << one(f) << ", mean line force on the rim = " << one(m)
