@@ -279,6 +279,8 @@ int main(int argc, char** argv) {
     const double L4 = std::pow(g.lx(), 4), scale = exact ? 1.0 : answer_scale(problem);
     opt.eps_start *= L4;
     opt.eps_min *= L4;
+    opt.eps_unit = L4;
+    report.eps_unit = L4;
     opt.tol *= scale;
 
     SolveResult result;
@@ -301,7 +303,7 @@ int main(int argc, char** argv) {
         result.converged = false;
         result.message = plate::fmt("the plate lies %.3g below the obstacle at a sample point", below) +
                          plate::fmt(", more than tol = %.3g (the penalty's own error at eps = ", opt.tol) +
-                         plate::fmt("%g); use a smaller --eps-min or --scheme exact", result.eps);
+                         plate::fmt("%g); use a smaller --eps-min or --scheme exact", result.eps / L4);
       }
       report.config.emplace_back("tol (absolute: --tol times the answer's size)", plate::fmt("%.6g", opt.tol));
       report.config.emplace_back("eps unit (lx^4)", plate::fmt("%.6g", L4));

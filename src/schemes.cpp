@@ -77,7 +77,7 @@ bool step_and_check(const Cholesky& chol, const VectorXd& rhs, VectorXd& w, doub
 // Why a run whose steps met the stopping rules is still not an answer.
 std::string uncertified_message(const SolveResult& r, const SolveOptions& o) {
   std::ostringstream m;
-  m << to_string(o.scheme) << " scheme: the stopping rules were met at eps = " << r.eps
+  m << to_string(o.scheme) << " scheme: the stopping rules were met at eps = " << r.eps / o.eps_unit
     << ", but the residual of (2a) only bounds the error by " << r.bound.bound << " > tol = " << o.tol << ": ";
   // Blame round-off only when the bound is of the size round-off alone would give.
   if (r.bound.roundoff > 0.1 * o.tol && r.bound.bound <= 10 * r.bound.roundoff)
@@ -99,7 +99,7 @@ LevelRecord linear_scheme_level(const Problem& p, double eps, VectorXd& w, Chole
   LevelRecord r;
   r.eps = eps;
   const SpMat A = p.K + (1.0 / eps) * p.M;
-  factorize_timed(chol, A, seconds_factorize, eps);
+  factorize_timed(chol, A, seconds_factorize, eps / o.eps_unit);
   r.factorizations = 1;
   const VectorXd scaled_w = p.sampling.weights / eps;
   StepWindow steps;
@@ -134,7 +134,7 @@ LevelRecord nonlinear_scheme_level(const Problem& p, double eps, VectorXd& w, Ch
       }
       // K's pattern contains every S^T D S, so the symbolic analysis of K serves every factorisation.
       const SpMat A = p.K + weighted_gram(p.sampling.S, d, p.grid.unknowns());
-      factorize_timed(chol, A, seconds_factorize, eps);
+      factorize_timed(chol, A, seconds_factorize, eps / o.eps_unit);
       ++r.factorizations;
       previous = active;
     }
@@ -190,12 +190,12 @@ SolveResult solve(const Problem& p, const SolveOptions& o) {
     res.levels.push_back(r);
     std::ostringstream m;
     if (!r.converged && !r.failure.empty()) {
-      m << to_string(o.scheme) << " scheme did not converge at eps = " << eps << ": " << r.failure;
+      m << to_string(o.scheme) << " scheme did not converge at eps = " << eps / o.eps_unit << ": " << r.failure;
       res.message = m.str();
       break;
     }
     if (!r.converged) {
-      m << to_string(o.scheme) << " scheme did not converge at eps = " << eps << ": " << o.max_iter
+      m << to_string(o.scheme) << " scheme did not converge at eps = " << eps / o.eps_unit << ": " << o.max_iter
         << " iterations (max-iter) left a step of " << r.last_step << " > tol = " << o.tol;
       res.message = m.str();
       break;
@@ -205,7 +205,7 @@ SolveResult solve(const Problem& p, const SolveOptions& o) {
       break;
     }
     if (eps / 10.0 < o.eps_min * (1 - 1e-12)) {
-      m << "eps continuation did not converge: at eps-min = " << o.eps_min
+      m << "eps continuation did not converge: at eps-min = " << o.eps_min / o.eps_unit
         << " successive eps levels still differ by " << r.level_change << " > tol = " << o.tol;
       res.message = m.str();
       break;

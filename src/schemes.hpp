@@ -21,6 +21,7 @@ struct SolveOptions {
   double eps_start = 1e-1;   // eps_s = eps_start * 10^{-(s - s0)}
   double eps_min = 1e-12;    // continuation fails if successive levels are not within tol by here
   bool continuation = true;  // false: one level at eps_start
+  double eps_unit = 1.0;     // messages give eps divided by this: the caller's unit (plate: lx^4)
   // Called after every iteration with the eps level and the new iterate.
   std::function<void(double eps, int iteration, const VectorXd& w)> on_iterate;
 };

@@ -119,11 +119,11 @@ std::string summary_json(const Report& r) {
     << ", \"unknowns\": " << p.grid.unknowns() << ", \"sample_points\": " << p.sampling.size() << "},\n";
   o << "  \"converged\": " << (s.converged ? "true" : "false") << ",\n";
   o << "  \"message\": " << quoted(s.message) << ",\n";
-  o << "  \"eps_final\": " << num(s.eps) << ",\n  \"total_iterations\": " << s.total_iterations() << ",\n";
+  o << "  \"eps_final\": " << num(s.eps / r.eps_unit) << ",\n  \"total_iterations\": " << s.total_iterations() << ",\n";
   o << "  \"levels\": [";
   for (size_t i = 0; i < s.levels.size(); ++i) {
     const LevelRecord& l = s.levels[i];
-    o << (i ? ",\n    " : "\n    ") << "{\"eps\": " << num(l.eps) << ", \"iterations\": " << l.iterations
+    o << (i ? ",\n    " : "\n    ") << "{\"eps\": " << num(l.eps / r.eps_unit) << ", \"iterations\": " << l.iterations
       << ", \"factorizations\": " << l.factorizations << ", \"last_step\": " << num(l.last_step)
       << ", \"level_change\": " << (l.level_change < 0 ? "null" : num(l.level_change))
       << ", \"converged\": " << (l.converged ? "true" : "false") << "}";
@@ -164,7 +164,7 @@ std::string summary_json(const Report& r) {
   if (r.lambda1h > 0) {
     o << "  \"contraction\": {\"lambda1h\": " << num(r.lambda1h)
       << ", \"sharp_factor\": " << num(sharp_contraction(r.lambda1h, s.eps))
-      << ", \"paper_rho\": " << num(paper_rho(1.0 / r.lambda1h, s.eps)) << ", \"at_eps\": " << num(s.eps) << "},\n";
+      << ", \"paper_rho\": " << num(paper_rho(1.0 / r.lambda1h, s.eps)) << ", \"at_eps\": " << num(s.eps / r.eps_unit) << "},\n";
   }
   o << "  \"seconds\": {\"assemble\": " << num(r.seconds_assemble) << ", \"factorize\": "
     << num(s.seconds_factorize) << ", \"iterate\": " << num(s.seconds_iterate) << ", \"bound\": " << num(s.seconds_bound) << ", \"total\": "
@@ -181,7 +181,7 @@ std::string summary_text(const Report& r) {
   o << (s.converged ? "converged" : "NOT CONVERGED: " + s.message) << "\n";
   if (!s.levels.empty()) {
     o << "levels (eps: iterations):";
-    for (const auto& l : s.levels) o << " " << num(l.eps) << ":" << l.iterations;
+    for (const auto& l : s.levels) o << " " << num(l.eps / r.eps_unit) << ":" << l.iterations;
     o << "  total " << s.total_iterations() << "\n";
   }
   o << "max w over the grid nodes = " << num(e.max_w) << " at (" << num(f.x[e.argmax_w]) << ", " << num(f.y[e.argmax_w])
@@ -216,7 +216,7 @@ std::string summary_text(const Report& r) {
     o << "error bound from the residual of (2a): max |w - w_eps| <= " << num(s.bound.bound) << " (round-off floor "
       << num(s.bound.roundoff) << ")" << (s.converged ? ", within tol" : ", NOT certified") << "\n";
   if (r.lambda1h > 0)
-    o << "lambda_1h = " << num(r.lambda1h) << ", contraction per iteration at eps = " << num(s.eps) << ": sharp "
+    o << "lambda_1h = " << num(r.lambda1h) << ", contraction per iteration at eps = " << num(s.eps / r.eps_unit) << ": sharp "
       << num(sharp_contraction(r.lambda1h, s.eps)) << ", paper's rho " << num(paper_rho(1.0 / r.lambda1h, s.eps))
       << "\n";
   char b[128];

@@ -23,6 +23,7 @@ struct Report {
   std::vector<std::pair<double, double>> points;  // where the user asked for w
   double lambda1h = -1;                           // < 0: not computed
   double seconds_assemble = 0, seconds_total = 0;
+  double eps_unit = 1;  // eps is printed divided by this, in the user's unit (plate: lx^4)
 };
 
 std::string nodal_csv(const NodalFields& f);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cctype>
@@ -158,6 +159,20 @@ TEST(Cli, OutputsKeepSymlinksPermissionsAndDevices) {
   fs::remove(target);
   ASSERT_EQ(run_plate("-q -n 4 --csv /dev/null").status, 0);
   EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  // A FIFO is written directly (nothing partial to protect) and stays a FIFO; a reader gets it all.
+  const fs::path fifo = temp_path("fifo.csv"), got = temp_path("fifo_read.csv");
+  fs::remove(fifo);
+  fs::remove(got);
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const PlateRun r = run_plate("-q -n 4 --csv " + fifo.string() + " & pid=$!; cat " + fifo.string() + " > " + got.string() + "; wait $pid");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::is_fifo(fs::symlink_status(fifo)));
+  std::ifstream csv(got);
+  std::stringstream rows;
+  rows << csv.rdbuf();
+  EXPECT_NE(rows.str().find("x,y,w"), std::string::npos) << rows.str().substr(0, 200);
+  fs::remove(fifo);
+  fs::remove(got);
 }
 
 namespace {
