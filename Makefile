@@ -19,7 +19,7 @@ BENCH     := results/speed_vs_error.csv results/speed_vs_error.md
 TTA       := results/time_to_accuracy.csv results/time_to_accuracy.md
 BENCH_ALL := $(BENCH) results/speed_vs_error.svg results/speed_vs_error.png results/micro_benchmarks.md \
              $(TTA) results/time_to_accuracy.svg results/time_to_accuracy.png
-PAPER_INPUTS := paper/paper.md paper/style.css $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp) \
+PAPER_INPUTS := paper/paper.md paper/style.css $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp src/programs/*.cpp) \
                 $(RESULTS) $(CONTINUUM) results/crosscheck.md results/hard_cases.md $(BENCH) results/speed_vs_error.svg results/micro_benchmarks.md
 
 .PHONY: all test deps build results paper crosscheck hard-cases continuum bench clean help FORCE

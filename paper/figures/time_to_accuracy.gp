@@ -16,7 +16,7 @@ set key bottom left box opaque font ',10'
 data = 'results/time_to_accuracy.csv'
 stats data using 2 nooutput
 blocks = STATS_blocks
-# The configurations of src/time_to_accuracy_main.cpp, in its order (the CSV has one block each).
+# The configurations of src/programs/time_to_accuracy.cpp, in its order (the CSV has one block each).
 array names[6] = ["exact edge (default)", "exact nodes", "exact Gauss", "(3a) edge", "(3a) Gauss (paper)", "(5a) Gauss (paper)"]
 ok(col) = (column(3) == 0 && column(col) > 0) ? column(col) : NaN
 bad(col) = (column(3) != 0 && column(col) > 0) ? column(col) : NaN
