@@ -19,8 +19,11 @@ BENCH     := results/speed_vs_error.csv results/speed_vs_error.md
 TTA       := results/time_to_accuracy.csv results/time_to_accuracy.md
 BENCH_ALL := $(BENCH) results/speed_vs_error.svg results/speed_vs_error.png results/micro_benchmarks.md \
              $(TTA) results/time_to_accuracy.svg results/time_to_accuracy.png
-PAPER_INPUTS := paper/paper.md paper/style.css $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp src/programs/*.cpp) \
+PAPER_INPUTS := paper/paper.md paper/style.css $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp src/programs/*.cpp src/programs/support/*.cpp src/programs/support/*.hpp) \
                 $(RESULTS) $(CONTINUUM) results/crosscheck.md results/hard_cases.md $(BENCH) results/speed_vs_error.svg results/micro_benchmarks.md
+
+# What each step makes and about how long it takes here (2 cores), said before it starts.
+say = @printf '\n== make: %s (about %s)\n' $(1) $(2)
 
 .PHONY: all test deps build results paper crosscheck hard-cases continuum bench clean help FORCE
 
@@ -49,18 +52,21 @@ test: build ## run the test suite
 crosscheck: results/crosscheck.md ## FreeFEM (HCT, gmsh) against this code: results/crosscheck.md
 
 results/crosscheck.md results/crosscheck.csv &: $(BUILD)/crosscheck reference/square_with_circle.geo reference/penalty_hct.edp | deps
+	$(call say,"results/crosscheck.md: FreeFEM and this code on four grids each","2 min")
 	$(BUILD)/crosscheck --out results --work $(BUILD)/crosscheck-work
 
 hard-cases: results/hard_cases.md ## tiny eps, area and point contact, n = 512, every bad input: results/hard_cases.md
 
 # It runs build/plate on every line of tests/bad_input.tsv, so it depends on both.
 results/hard_cases.md: $(BUILD)/hard_cases $(BUILD)/plate tests/bad_input.tsv reference/plate_constants.csv
+	$(call say,"results/hard_cases.md: tiny eps, point and area contact, n = 512, every bad input","8 min")
 	$(BUILD)/hard_cases --out results --plate $(BUILD)/plate --cases tests/bad_input.tsv --scratch $(BUILD)/hard-cases-work
 
 continuum: $(CONTINUUM) ## the h -> 0 limit: exact solves n = 8 ... 512, three samplings, orders, Richardson (about 6 min)
 
 # The timings file is written by the same run; it is not byte-identical between runs.
 $(CONTINUUM_DATA) &: $(BUILD)/continuum $(PAPER_NUMBERS)
+	$(call say,"results/continuum*: exact solves n = 8 ... 512, three samplings","5 min")
 	$(BUILD)/continuum --out results
 
 results/continuum.svg results/continuum.png: results/continuum_error.csv
@@ -71,15 +77,19 @@ results: $(RESULTS) ## the paper's table, Fig. 1, Fig. 2 and the contraction che
 # Each driver writes its files whole (temporary file, then rename); gnuplot writes to a
 # temporary file that is renamed once it is complete.
 $(TABLES) &: $(BUILD)/table reference/paper_table.csv $(PAPER_NUMBERS)
+	$(call say,"results/table*: the paper's iteration table and the finer grids","10 s")
 	$(BUILD)/table --out results
 
 results/contraction.md: $(BUILD)/contraction $(PAPER_NUMBERS)
+	$(call say,"results/contraction.md: the measured contraction factors","10 s")
 	$(BUILD)/contraction --out results
 
 $(FIG1_DATA) &: $(BUILD)/fig1 $(PAPER_NUMBERS)
+	$(call say,"Fig. 1 data","5 s")
 	$(BUILD)/fig1 --out results
 
 $(FIG2_DATA) &: $(BUILD)/fig2 $(PAPER_NUMBERS)
+	$(call say,"Fig. 2 data","1 min")
 	$(BUILD)/fig2 --out results
 
 results/fig1.svg results/fig1.png: $(FIG1_DATA)
@@ -93,15 +103,18 @@ bench: $(BENCH_ALL) ## speed against error up to n = 1024, time to accuracy agai
 
 # Timings differ on every run: these files are remade only when the programs change.
 $(BENCH) &: $(BUILD)/bench $(PAPER_NUMBERS)
+	$(call say,"results/speed_vs_error*: every solver to n = 1024, one process each","12 min")
 	$(BUILD)/bench --out results
 
 results/micro_benchmarks.md: $(BUILD)/micro_bench
+	$(call say,"results/micro_benchmarks.md","1 min")
 	{ echo '```'; $(BUILD)/micro_bench --benchmark_color=false 2>&1; echo '```'; } > $@.tmp && mv $@.tmp $@
 
 results/speed_vs_error.svg results/speed_vs_error.png: $(BENCH)
 
 # The whole plate process against the continuum limit; timings differ on every run.
 $(TTA) &: $(BUILD)/time_to_accuracy $(BUILD)/plate results/continuum_limits.csv
+	$(call say,"results/time_to_accuracy*: whole plate runs against the continuum limit","3 min")
 	$(BUILD)/time_to_accuracy --plate $(BUILD)/plate --limits results/continuum_limits.csv --out results
 
 results/time_to_accuracy.svg results/time_to_accuracy.png: results/time_to_accuracy.csv
@@ -109,6 +122,7 @@ results/time_to_accuracy.svg results/time_to_accuracy.png: results/time_to_accur
 paper: results/paper.html ## the literate document: results/paper.html (self-contained, opens offline)
 
 results/paper.html: $(PAPER_INPUTS) | deps
+	$(call say,"results/paper.html","10 s")
 	pandoc paper/paper.md --from markdown --to html5 --standalone --self-contained --mathml \
 	  --lua-filter paper/filters/equations.lua --lua-filter paper/filters/code.lua \
 	  --lua-filter paper/filters/include.lua --css paper/style.css --resource-path . \

@@ -8,7 +8,7 @@ set -euo pipefail
 
 packages=(
   g++ make cmake pkg-config
-  libeigen3-dev libsuitesparse-dev libmuparser-dev libcli11-dev
+  libeigen3-dev libsuitesparse-dev libmuparser-dev libcli11-dev nlohmann-json3-dev
   libopenblas0-pthread
   libgtest-dev libgmock-dev libbenchmark-dev
   freefem++ libfreefem++ gmsh

@@ -10,7 +10,7 @@
 
 #include "contact.hpp"
 #include "dual_active_set.hpp"
-#include "schemes.hpp"
+#include "norms.hpp"
 #include "stopwatch.hpp"
 
 namespace plate {
@@ -28,6 +28,13 @@ VectorXd multipliers(const Problem& p, const VectorXd& w, const NodeSet& held) {
   for (int q = 0; q < lambda.size(); ++q)
     if (held[q]) lambda[q] = r[4 * q] / p.sampling.weights[q];
   return lambda;
+}
+
+// How many rows two sets disagree on: the active-set change one iteration makes.
+int differing(const NodeSet& a, const NodeSet& b) {
+  int d = 0;
+  for (size_t q = 0; q < a.size(); ++q) d += a[q] != b[q];
+  return d;
 }
 
 // A 64-bit fingerprint of a node set, to notice a repeated active set without storing it.
@@ -181,6 +188,7 @@ ExactResult solve_exact(const Problem& p, const ExactOptions& o, NodeSet initial
   for (int q = 0; q < nodes; ++q)
     if (A[q] && !std::isfinite(p.phi[q])) A[q] = 0;  // no obstacle there: nothing to hold
   level.predicted = members(A);
+  if (o.on_iterate) o.on_iterate(p.grid.nx, 0, level.predicted, 0);
   FixedSetSolver fs(p.K, p.F, p.phi, o.max_correction);
   std::unordered_set<size_t> seen{fingerprint(A)};
   Step s;
@@ -196,6 +204,7 @@ ExactResult solve_exact(const Problem& p, const ExactOptions& o, NodeSet initial
     NodeSet next(nodes, 0);
     for (int q = 0; q < nodes; ++q)
       next[q] = A[q] ? s.lambda[q] > -o.tol * lmax : p.phi[q] - s.w[4 * q] > o.tol * wmax;
+    if (o.on_iterate) o.on_iterate(p.grid.nx, level.pdas_iterations, members(A), differing(A, next));
     if (next == A) {
       done = true;
       break;

@@ -4,6 +4,7 @@
 // fallback that cannot cycle. Any other sampling: the dual active-set method of dual_active_set.hpp.
 // Both with grid sequencing.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,10 @@ struct ExactOptions {
   bool nested = true;       // start from the solution on the grid with twice the cell size
   int coarsest = 8;         // cells along x on the coarsest grid of the sequence
   int max_correction = 64;  // largest active-set change solved from the last factorisation
+  // Progress, on every grid as it starts (iteration 0, the rows predicted) and after each of its
+  // active-set iterations: the grid's cells along x, the iteration, the rows held, and how many
+  // join or leave next. Empty: silent.
+  std::function<void(int cells, int iteration, int held, int changed)> on_iterate;
 };
 void validate(const ExactOptions& o);
 

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "cholesky.hpp"
+#include "norms.hpp"
 #include "schemes.hpp"
 
 namespace plate {
@@ -35,11 +36,6 @@ double sharp_contraction(double lambda1h, double eps) { return 1.0 / (1.0 + eps 
 // Eq. (6): the paper's contraction factor, kept to compare with the sharp one.
 double paper_rho(double c, double eps) { return (1.0 + c * eps) / ((1.0 + 2.0 * c * eps) * (1.0 + eps / c)); }
 // @end contraction-factors
-
-double m_norm(const Problem& p, const VectorXd& v) {
-  const VectorXd sv = p.sampling.S * v;
-  return std::sqrt(sv.dot(p.sampling.weights.cwiseProduct(sv)));
-}
 
 std::vector<double> linear_step_norms(const Problem& p, double eps, int iterations, VectorXd* last_iterate) {
   std::vector<double> steps;

@@ -26,9 +26,6 @@ double sharp_contraction(double lambda1h, double eps);
 // Friedrichs constant in ||s||_0^2 <= c ||Lap s||_0^2, c = 1 / lambda_1.
 double paper_rho(double c, double eps);
 
-// ||v||_M = ||S v||_W, the norm in which the contraction is proved (the L2 norm for Gauss sampling).
-double m_norm(const Problem& p, const VectorXd& v);
-
 // ||w^{n+1} - w^n||_M for n = 0 .. iterations - 1 of the linear scheme at fixed eps, from w^0 = 0;
 // the last iterate in *last_iterate if given.
 std::vector<double> linear_step_norms(const Problem& p, double eps, int iterations, VectorXd* last_iterate = nullptr);

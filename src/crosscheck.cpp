@@ -1,26 +1,20 @@
-// Running the two codes for the cross-check and reading FreeFEM's output.
+// Our side of the cross-check, and the rule that decides whether two codes agree.
 #include "crosscheck.hpp"
 
-#include <sys/wait.h>
-
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "cholesky.hpp"
 #include "contact.hpp"
-#include "fields.hpp"
+#include "norms.hpp"
 #include "schemes.hpp"
 #include "stopwatch.hpp"
 
 namespace plate {
 
-CheckValues solve_ours(int n, SamplingKind kind, const CrossSettings& s) {
+CheckValues solve_ours(int n, SamplingKind kind, const Field& phi, const CrossSettings& s) {
   const auto t0 = Clock::now();
   const Grid g = make_grid(n);
-  const Field phi = cylinder(0.5, 0.5, 0.25, s.R);
   const Problem p = make_problem(g, kind, phi, [](double, double) { return 0.0; });
   SolveOptions o;
   o.scheme = Scheme::Nonlinear;
@@ -50,76 +44,6 @@ double uniform_load_centre_ours(int n) {
   Cholesky c;
   c.factorize(assemble_matrix(g, bfs_stiffness(g.h)));
   return evaluate(g, c.solve(assemble_load(g, [](double, double) { return 1.0; })), 0.5, 0.5).w;
-}
-
-namespace {
-std::string quote(const std::string& s) { return "'" + s + "'"; }
-void run(const std::string& what, const std::string& cmd, const std::string& log) {
-  const int raw = std::system((cmd + " > " + quote(log) + " 2>&1").c_str());
-  const int status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
-  if (status != 0) {
-    std::ifstream in(log);
-    std::stringstream text;
-    text << in.rdbuf();
-    throw std::runtime_error(what + " failed (exit " + std::to_string(status) + "): " + cmd + "\n" + text.str());
-  }
-}
-}  // namespace
-
-void gmsh_mesh(const std::string& geo, double lc, const std::string& msh) {
-  std::ostringstream cmd;
-  cmd.precision(17);
-  cmd << "gmsh -2 -format msh22 -setnumber lc " << lc << " " << quote(geo) << " -o " << quote(msh);
-  run("gmsh", cmd.str(), msh + ".log");
-}
-
-std::string run_freefem(const std::string& edp, const std::string& msh, const std::string& args,
-                        const std::string& out_json) {
-  // Debian's FreeFem++ looks for its plugins in the wrong folder unless told.
-  setenv("FF_LOADPATH", "/usr/lib/freefem++", 0);
-  std::remove(out_json.c_str());
-  run("FreeFem++", "FreeFem++ -nw -v 0 " + quote(edp) + " -mesh " + quote(msh) + " " + args + " -out " + quote(out_json),
-      out_json + ".log");
-  std::ifstream in(out_json);
-  std::stringstream text;
-  text << in.rdbuf();
-  if (text.str().empty()) throw std::runtime_error("FreeFem++ wrote no output to " + out_json);
-  return text.str();
-}
-
-double json_number(const std::string& json, const std::string& key) {
-  const std::string k = "\"" + key + "\":";
-  const size_t at = json.find(k);
-  if (at == std::string::npos) return NAN;
-  size_t p = at + k.size();
-  while (p < json.size() && (json[p] == ' ' || json[p] == '[')) ++p;
-  return std::strtod(json.c_str() + p, nullptr);
-}
-
-CheckValues freefem_values(const std::string& json, double lc) {
-  CheckValues v;
-  v.code = "freefem-hct";
-  std::ostringstream grid;
-  grid << "gmsh lc = " << lc << " (" << json_number(json, "triangles") << " triangles)";
-  v.grid = grid.str();
-  v.h = lc;
-  v.unknowns = static_cast<int>(json_number(json, "unknowns"));
-  v.converged = json.find("\"converged\": true") != std::string::npos;
-  v.iterations = static_cast<int>(json_number(json, "total_iterations"));
-  v.eps_final = json_number(json, "eps_final");
-  v.max_w = json_number(json, "max_w");
-  // "w_at": [w(0.5, 0.25), w(0.5, 0.125), w(0.25, 0.25)]
-  const size_t at = json.find("\"w_at\":");
-  if (at != std::string::npos) {
-    const char* p = json.c_str() + json.find('[', at) + 1;
-    char* end = nullptr;
-    v.w_rim = std::strtod(p, &end);
-    v.w_mid = std::strtod(end + 1, &end);
-    v.w_diag = std::strtod(end + 1, &end);
-  }
-  v.force = json_number(json, "total_contact_force");
-  v.seconds = json_number(json, "seconds");
-  return v;
 }
 
 std::vector<double> values_of(const std::vector<CheckValues>& runs, double CheckValues::*field) {

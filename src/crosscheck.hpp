@@ -1,10 +1,13 @@
 // The cross-code check: the paper's problem solved by this code (Bogner-Fox-Schmit on squares) and
 // by an independent FreeFEM script (HCT triangles on a gmsh mesh that follows the contact circle),
-// compared at check points with a tolerance taken from each code's own convergence.
+// compared at check points with a tolerance taken from each code's own convergence. Running
+// FreeFEM and gmsh is the programs' business (src/programs/support/freefem.*).
 #pragma once
+#include <cmath>
 #include <string>
 #include <vector>
 
+#include "assemble.hpp"
 #include "sampling.hpp"
 
 namespace plate {
@@ -25,24 +28,14 @@ std::vector<double> values_of(const std::vector<CheckValues>& runs, double Check
 constexpr double kCheckPoints[3][2] = {{0.5, 0.25}, {0.5, 0.125}, {0.25, 0.25}};
 
 struct CrossSettings {
-  double R = 0.0625, tol = 1e-6, eps_start = 0.1, eps_min = 1e-14;
+  double R = NAN;  // the obstacle's height: the programs read the paper's from reference/paper_numbers.csv
+  double tol = 1e-6, eps_start = 0.1, eps_min = 1e-14;
 };
 
-// Our solver: nonlinear scheme (3a), eps continuation, the paper's obstacle; f = 0.
-CheckValues solve_ours(int n, SamplingKind kind, const CrossSettings& s);
+// Our solver: nonlinear scheme (3a), eps continuation, obstacle phi (the paper's, of height s.R); f = 0.
+CheckValues solve_ours(int n, SamplingKind kind, const Field& phi, const CrossSettings& s);
 // Our clamped square under f = 1: w(0.5, 0.5).
 double uniform_load_centre_ours(int n);
-
-// gmsh: mesh the .geo with size lc into an MSH 2 file. Throws std::runtime_error on failure.
-void gmsh_mesh(const std::string& geo, double lc, const std::string& msh);
-// FreeFEM: run the .edp on a mesh with extra "-name value" arguments, JSON written to out_json.
-// Returns the JSON text; throws std::runtime_error if FreeFem++ fails to run or exits with an error.
-std::string run_freefem(const std::string& edp, const std::string& msh, const std::string& args,
-                        const std::string& out_json);
-CheckValues freefem_values(const std::string& json, double lc);
-
-// The number after "key": in a flat JSON text (the FreeFEM script's output); NaN if absent.
-double json_number(const std::string& json, const std::string& key);
 
 // The verdict rule. If a sequence of grid values converges at least linearly with a factor
 // <= 1/2 per halving of h, the error of its finest value is at most its last increment. The

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "dual_qp.hpp"
-#include "schemes.hpp"
+#include "norms.hpp"
 #include "stopwatch.hpp"
 
 namespace plate {
@@ -90,6 +90,7 @@ ExactResult solve_exact_rows(const Problem& p, const ExactOptions& o, const Node
   }
   const size_t cap = std::max(256, 2 * p.sampling.edge_size());  // rows added per round at most
   level.predicted = static_cast<int>(fresh.size());
+  if (o.on_iterate) o.on_iterate(p.grid.nx, 0, level.predicted, 0);
   VectorXd w = w0, mu;
   while (!fresh.empty()) {
     if (level.pdas_iterations++ >= o.max_iter) {
@@ -114,6 +115,8 @@ ExactResult solve_exact_rows(const Problem& p, const ExactOptions& o, const Node
       break;
     }
     fresh = violated_rows(p.sampling.S * w - p.phi, in_schur, slack, cap);
+    if (o.on_iterate) o.on_iterate(p.grid.nx, level.pdas_iterations, static_cast<int>(schur.rows.size()),
+                                   static_cast<int>(fresh.size()));
   }
   res.lambda = VectorXd::Zero(rows);  // mu is a force; lambda its density per unit area or length
   res.active = NodeSet(rows, 0);

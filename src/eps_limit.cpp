@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "norms.hpp"
 #include "schemes.hpp"
 
 namespace plate {

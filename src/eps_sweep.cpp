@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "contraction.hpp"
+#include "norms.hpp"
 #include "stopwatch.hpp"
 
 namespace plate {

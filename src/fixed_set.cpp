@@ -10,8 +10,6 @@
 
 #include <Eigen/LU>
 
-#include "stopwatch.hpp"
-
 namespace plate {
 
 SpMat decoupled(const SpMat& K, const NodeSet& fixed) {
@@ -29,7 +27,6 @@ FixedSetSolver::FixedSetSolver(const SpMat& K, const VectorXd& F, const VectorXd
 }
 
 void FixedSetSolver::factorize(const NodeSet& fixed) {
-  const auto t0 = Clock::now();
   base_ = fixed;
   chol_.factorize(decoupled(K_, fixed));
   // Right-hand side of A0's system: the load, minus what the held values push into the free rows.
@@ -43,7 +40,6 @@ void FixedSetSolver::factorize(const NodeSet& fixed) {
     if (fixed[p]) b[4 * p] = K_.coeff(4 * p, 4 * p) * phi_[p];
   w0_ = chol_.solve(b);
   columns_.clear();
-  seconds_factorize_ += seconds_since(t0);
 }
 
 void FixedSetSolver::add_columns(const std::vector<int>& nodes) {

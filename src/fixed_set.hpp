@@ -29,7 +29,6 @@ class FixedSetSolver {
 
   int factorizations() const { return chol_.factorizations(); }
   long correction_columns() const { return correction_columns_; }
-  double seconds_factorize() const { return seconds_factorize_; }
 
  private:
   void factorize(const NodeSet& fixed);
@@ -45,7 +44,6 @@ class FixedSetSolver {
   VectorXd w0_;     // the minimiser for A0 itself
   std::unordered_map<int, VectorXd> columns_;  // responses of A0's system to one node's change
   long correction_columns_ = 0;
-  double seconds_factorize_ = 0;
 };
 
 // K with the value unknowns of the nodes in `fixed` decoupled: their rows and columns are zero

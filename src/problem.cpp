@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "bfs_element.hpp"
+
 namespace plate {
 
 void check_obstacle_on_boundary(const Grid& g, const Field& obstacle) {
@@ -71,6 +73,18 @@ Problem make_problem(const Grid& g, SamplingKind kind, const Field& obstacle, co
 void check_obstacle_at_nodes(const Grid& g, const Field& obstacle) {
   for (int j = 0; j <= g.ny; ++j)
     for (int i = 0; i <= g.nx; ++i) check_obstacle_value(g.x(i), g.y(j), obstacle(g.x(i), g.y(j)));
+}
+
+// S^T W S. For Gauss sampling this equals the consistent mass matrix, which we assemble by
+// stencil instead of from 16 points per element.
+static SpMat sampling_mass(const Grid& g, const Sampling& s) {
+  if (s.kind == SamplingKind::Nodes || s.kind == SamplingKind::Edge) return weighted_gram(s.S, s.weights, g.unknowns());
+  // The Gauss rows by stencil, the edge rows (if any) by their Gram matrix.
+  VectorXd edge_only = s.weights;
+  edge_only.head(s.edge_begin).setZero();
+  SpMat M = assemble_matrix(g, bfs_mass(g.h));
+  if (s.edge_size() > 0) M += weighted_gram(s.S, edge_only, g.unknowns());
+  return M;
 }
 
 Problem make_problem(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load) {

@@ -5,8 +5,6 @@
 
 #include <cmath>
 
-#include "format.hpp"
-
 namespace plate {
 
 namespace {
@@ -35,18 +33,9 @@ Extrapolation extrapolate(const std::vector<double>& v, const std::vector<double
     e.limit = v[m - 1], e.bar = std::abs(v[m - 1] - v[m - 2]);
     e.limit_noise = z(m - 1), e.bar_noise = z(m - 1) + z(m - 2);
   }
-  const std::string fallback = "; finest value " + fmt_above(e.limit, e.limit_noise, 10, 'g') + " +- " +
-                               fmt_above(e.bar, e.bar_noise, 2) + " (last increment)";
-  if (t < 2 || !std::isfinite(e.orders[t - 1]) || !std::isfinite(e.orders[t - 2])) {
-    e.verdict = (t < 2 ? "too few grids" : "not steady: the last increments change sign or grow") + fallback;
-    return e;
-  }
+  if (t < 2 || !std::isfinite(e.orders[t - 1]) || !std::isfinite(e.orders[t - 2])) return e;
   const double p = e.orders[t - 1], q = e.orders[t - 2];
-  if (std::abs(p - q) > spread) {
-    e.verdict = "not steady: the last two orders are " + format_order(q, e.order_noise[t - 2]) + " and " +
-                format_order(p, e.order_noise[t - 1]) + fallback;
-    return e;
-  }
+  if (std::abs(p - q) > spread) return e;
   e.steady = true;
   e.limit = richardson(v[m - 2], v[m - 1], p);
   e.bar = std::abs(e.limit - richardson(v[m - 3], v[m - 2], q));
@@ -57,19 +46,8 @@ Extrapolation extrapolate(const std::vector<double>& v, const std::vector<double
   };
   e.limit_noise = limit_noise(m - 2, m - 1, p, e.order_noise[t - 1]);
   e.bar_noise = e.limit_noise + limit_noise(m - 3, m - 2, q, e.order_noise[t - 2]);
-  e.verdict = "order " + format_order(p, e.order_noise[t - 1]) + ", limit " + fmt_above(e.limit, e.limit_noise, 10, 'g') +
-              " +- " + fmt_above(e.bar, e.bar_noise, 2);
   return e;
 }
-// @end richardson
-
-std::string format_order(double p, double noise) {
-  if (!std::isfinite(p)) return "-";
-  const int decimals = noise > 0 ? static_cast<int>(std::floor(-std::log10(10 * noise))) : 2;
-  if (decimals < 0) return "~" + fmt("%.0f", p) + " (round-off)";
-  return fmt(("%." + std::to_string(std::min(decimals, 2)) + "f").c_str(), p);
-}
-
 // @end richardson
 
 }  // namespace plate

@@ -1,7 +1,6 @@
 // Observed order and Richardson extrapolation of a sequence computed on grids h, h/2, h/4, ...:
 // the h -> 0 limit with an error bar, stated only where the order is steady.
 #pragma once
-#include <string>
 #include <vector>
 
 namespace plate {
@@ -16,15 +15,11 @@ struct Extrapolation {
   // What the round-off of the values (the `noise` passed in) can change in each of the above.
   std::vector<double> order_noise;
   double limit_noise = 0, bar_noise = 0;
-  std::string verdict;  // one line for a report, printed to the digits the noise leaves
 };
 
 // Eq. (D16): v_h = v + C h^p + ..., p from successive increments, v ~ v_h/4 + d / (2^p - 1).
 // noise[k] bounds the round-off in values[k] (empty: none).
 Extrapolation extrapolate(const std::vector<double>& values, const std::vector<double>& noise = {},
                           double spread = 0.3);
-
-// An order to the decimals (at most 2) its noise leaves, or "-" where it is undefined.
-std::string format_order(double p, double noise);
 
 }  // namespace plate

@@ -5,7 +5,6 @@
 #include <stdexcept>
 #include <utility>
 
-#include "assemble.hpp"
 #include "bfs_element.hpp"
 #include "gauss.hpp"
 
@@ -156,16 +155,6 @@ SpMat weighted_gram(const RowSpMat& S, const VectorXd& d, int unknowns) {
   SpMat G(unknowns, unknowns);
   G.setFromTriplets(t.begin(), t.end());
   return G;
-}
-
-SpMat sampling_mass(const Grid& g, const Sampling& s) {
-  if (s.kind == SamplingKind::Nodes || s.kind == SamplingKind::Edge) return weighted_gram(s.S, s.weights, g.unknowns());
-  // The Gauss rows by stencil, the edge rows (if any) by their Gram matrix.
-  VectorXd edge_only = s.weights;
-  edge_only.head(s.edge_begin).setZero();
-  SpMat M = assemble_matrix(g, bfs_mass(g.h));
-  if (s.edge_size() > 0) M += weighted_gram(s.S, edge_only, g.unknowns());
-  return M;
 }
 
 }  // namespace plate

@@ -45,8 +45,4 @@ inline bool has_edge(SamplingKind k) { return k == SamplingKind::Edge || k == Sa
 // S^T diag(d) S, visiting only the points with d_p != 0 (the active ones, in the schemes).
 SpMat weighted_gram(const RowSpMat& S, const VectorXd& d, int unknowns);
 
-// S^T W S. For Gauss sampling this equals the consistent mass matrix, which we assemble by
-// stencil instead of from 16 points per element (a test checks the two agree).
-SpMat sampling_mass(const Grid& g, const Sampling& s);
-
 }  // namespace plate

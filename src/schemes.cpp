@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "norms.hpp"
 #include "stopwatch.hpp"
 
 namespace plate {
@@ -19,12 +20,6 @@ int SolveResult::total_iterations() const {
   int n = 0;
   for (const auto& l : levels) n += l.iterations;
   return n;
-}
-
-double max_nodal_abs(const VectorXd& w) {
-  // Unknowns are interleaved (w, w_x, w_y, w_xy) per node: the values are every fourth entry.
-  const Eigen::Map<const VectorXd, 0, Eigen::InnerStride<4>> values(w.data(), w.size() / 4);
-  return values.size() ? values.cwiseAbs().maxCoeff() : 0.0;
 }
 
 namespace {

@@ -48,9 +48,6 @@ struct SolveResult {
   int total_iterations() const;
 };
 
-// Max over grid nodes of |w|: the paper's C-norm on nodal values (only value unknowns count).
-double max_nodal_abs(const VectorXd& w);
-
 // Runs one eps level from the starting guess w (overwritten with the last iterate).
 LevelRecord linear_scheme_level(const Problem& p, double eps, VectorXd& w, Cholesky& chol, const SolveOptions& o,
                                 double* seconds_factorize = nullptr);

@@ -1,5 +1,5 @@
-// The paper's experiment as a test fixture: unit square, f = 0, obstacle of height R on the disk
-// of radius 0.25 around the centre.
+// The paper's experiment as a test fixture, read from reference/paper_numbers.csv: unit square,
+// f = 0, the obstacle's disk and height.
 #pragma once
 #include <cmath>
 #include <utility>
@@ -9,14 +9,20 @@
 #include "problem.hpp"
 
 namespace plate {
-inline Problem paper_problem(int n, SamplingKind kind, double R = 0.0625) {
-  return make_problem(make_grid(n), kind, cylinder(0.5, 0.5, 0.25, R), [](double, double) { return 0.0; });
+inline const PaperScene& paper_scene() {
+  static const PaperScene scene = read_paper_scene(std::string(PLATE_SOURCE_DIR) + "/reference");
+  return scene;
+}
+
+// The paper's problem at obstacle height R (NaN: the paper's).
+inline Problem paper_problem(int n, SamplingKind kind, double R = NAN) {
+  const double height = std::isnan(R) ? paper_scene().height : R;
+  return make_problem(make_grid(n), kind, paper_scene().obstacle(height), [](double, double) { return 0.0; });
 }
 
 // A published constant of the clamped plate, from reference/plate_constants.csv.
 inline double plate_constant(const std::string& key) {
-  static const auto numbers = read_paper_numbers(std::string(PLATE_SOURCE_DIR) + "/reference/plate_constants.csv");
-  return published(numbers, key);
+  return plate::plate_constant(std::string(PLATE_SOURCE_DIR) + "/reference", key);
 }
 
 // Largest asymmetry of the nodal values over the eight symmetries of the n x n grid.

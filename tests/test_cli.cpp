@@ -14,6 +14,9 @@
 #include <sstream>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "paper_case.hpp"
 #include "run_program.hpp"
 
 namespace {
@@ -29,6 +32,13 @@ PlateRun run_plate(const std::string& args) {
 
 std::string temp_path(const std::string& name) {
   return (std::filesystem::temp_directory_path() / ("plate_cli_test_" + name)).string();
+}
+
+// A summary `plate` wrote; an empty object if there is none or it is not JSON (the checks then fail).
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  return j.is_discarded() ? nlohmann::json::object() : j;
 }
 }  // namespace
 
@@ -47,11 +57,10 @@ TEST(Cli, PaperCaseRunsAndWritesItsOutputs) {
   std::filesystem::remove(csv);
   const PlateRun r = run_plate("-n 4 -R 0.0625 --sampling nodes --point 0.5,0.5 --json " + json + " --csv " + csv);
   ASSERT_EQ(r.status, 0) << r.output;
-  std::ifstream j(json);
-  std::stringstream js;
-  js << j.rdbuf();
-  EXPECT_NE(js.str().find("\"converged\": true"), std::string::npos);
-  EXPECT_NE(js.str().find("\"w_at_points\""), std::string::npos);
+  const auto js = read_json(json);
+  EXPECT_EQ(js.value("converged", false), true) << js.dump();
+  ASSERT_EQ(js.value("w_at_points", nlohmann::json::array()).size(), 1u) << js.dump();
+  EXPECT_NEAR(js["w_at_points"][0]["w"].get<double>(), js["max_w"].get<double>(), 1e-12);  // the centre is the top
   std::ifstream c(csv);
   int lines = 0;
   for (std::string line; std::getline(c, line);) lines += (!line.empty() && line[0] != '#');
@@ -64,11 +73,12 @@ TEST(Cli, ExactSchemeWritesItsCertificate) {
   const PlateRun r = run_plate("-n 16 --scheme exact --json " + json);
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("--sampling = edge"), std::string::npos) << r.output;  // the default, echoed
-  std::ifstream j(json);
-  std::stringstream js;
-  js << j.rdbuf();
-  for (const char* key : {"\"converged\": true", "\"certificate\": {\"violation\": ", "\"residual_ok\": true"})
-    EXPECT_NE(js.str().find(key), std::string::npos) << key << "\n" << js.str();
+  const auto js = read_json(json);
+  EXPECT_EQ(js.value("converged", false), true) << js.dump();
+  EXPECT_EQ(js.value("residual_ok", false), true) << js.dump();
+  ASSERT_TRUE(js.contains("certificate")) << js.dump();
+  for (const char* entry : {"violation", "negative_multiplier", "complementarity", "stationarity"})
+    EXPECT_LE(js["certificate"][entry].get<double>(), js["certificate"]["tol"].get<double>()) << entry;
 }
 
 using BadInput = plate::BadInputCase;
@@ -89,10 +99,8 @@ TEST_P(CliBadInput, ExitsWithItsStatusAndAMessageNamingTheInput) {
   EXPECT_NE(r.output.find(c.names), std::string::npos) << r.output;
   if (!own_json) return;
   if (c.status == 3) {  // not converged: the outputs are written, and say so
-    std::ifstream j(json);
-    std::stringstream js;
-    js << j.rdbuf();
-    EXPECT_NE(js.str().find("\"converged\": false"), std::string::npos) << js.str();
+    const auto js = read_json(json);
+    EXPECT_EQ(js.value("converged", true), false) << js.dump();
     const std::string csv = temp_path("bad_" + std::to_string(getpid()) + ".csv");
     ASSERT_EQ(run_plate(c.args + " -q --csv " + csv).status, 3);
     std::ifstream in(csv);
@@ -150,10 +158,7 @@ TEST(Cli, OutputsKeepSymlinksPermissionsAndDevices) {
   fs::create_symlink(target, link);
   ASSERT_EQ(run_plate("-q -n 4 --json " + link.string()).status, 0);
   EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
-  std::ifstream in(target);
-  std::stringstream js;
-  js << in.rdbuf();
-  EXPECT_NE(js.str().find("\"converged\": true"), std::string::npos);
+  EXPECT_EQ(read_json(target.string()).value("converged", false), true);
   EXPECT_EQ(fs::status(target).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
   fs::remove(link);
   fs::remove(target);
@@ -185,13 +190,8 @@ Answer answer_of(const std::string& args) {
   const std::string json = temp_path("scale_" + std::to_string(getpid()) + ".json");
   std::filesystem::remove(json);
   const PlateRun r = run_plate("-q " + args + " --json " + json);
-  std::ifstream in(json);
-  std::stringstream js;
-  js << in.rdbuf();
-  auto number = [&](const std::string& key) {
-    const auto at = js.str().find("\"" + key + "\": ");
-    return at == std::string::npos ? NAN : std::strtod(js.str().c_str() + at + key.size() + 4, nullptr);
-  };
+  const auto js = read_json(json);
+  auto number = [&](const char* key) { return js.contains(key) && js[key].is_number() ? js[key].get<double>() : NAN; };
   return {r.status, number("max_w"), number("total_contact_force")};
 }
 }  // namespace
@@ -217,4 +217,21 @@ TEST(Cli, AnswerScalesWithUnitsAndHeightForEveryScheme) {
     EXPECT_NEAR(low.max_w / unit.max_w / (1e-5 / 0.0625), 1.0, 1e-9);
     EXPECT_NEAR(low.force / unit.force / (1e-5 / 0.0625), 1.0, force_tol);
   }
+}
+
+// `plate` runs from anywhere, so its defaults are spelled in the program; this holds them to the one
+// source of the paper's numbers, reference/paper_numbers.csv.
+TEST(Cli, DefaultsAreThePapersProblem) {
+  const std::string json = temp_path("defaults_" + std::to_string(getpid()) + ".json");
+  ASSERT_EQ(run_plate("-q --json " + json).status, 0);
+  const auto config = read_json(json).value("config", nlohmann::json::object());
+  const plate::PaperScene& s = plate::paper_scene();
+  ASSERT_TRUE(config.contains("--obstacle-height")) << config.dump();
+  EXPECT_EQ(std::stod(config["--obstacle-height"].get<std::string>()), s.height);
+  EXPECT_EQ(std::stod(config["--radius"].get<std::string>()), s.radius);
+  const std::string centre = config["--centre"].get<std::string>();
+  EXPECT_EQ(std::stod(centre.substr(0, centre.find(','))), s.cx);
+  EXPECT_EQ(std::stod(centre.substr(centre.find(',') + 1)), s.cy);
+  EXPECT_EQ(std::stoi(config["--cells"].get<std::string>()), s.cells);
+  std::filesystem::remove(json);
 }

@@ -11,9 +11,8 @@
 
 using namespace plate;
 
-// Bjorstad & Tjostheim, "High precision solutions of two fourth order eigenvalue problems",
-// Computing 63 (1999): first eigenvalue of Lap^2 u = lambda u, u = du/dn = 0 on the unit square.
-constexpr double kClampedSquareLambda1 = 1294.9339795917;
+// Bjorstad & Tjostheim (1999), the first eigenvalue of the clamped unit square: reference/plate_constants.csv.
+const double kClampedSquareLambda1 = plate_constant("lambda1");
 
 TEST(Contraction, Lambda1hConvergesToTheClampedPlateEigenvalue) {
   double previous = INFINITY;

@@ -13,6 +13,7 @@
 #include "dual_qp.hpp"
 #include "fields.hpp"
 #include "line_force.hpp"
+#include "norms.hpp"
 #include "paper_case.hpp"
 #include "scenes.hpp"
 #include "schemes.hpp"
@@ -22,13 +23,14 @@ using namespace plate;
 namespace {
 const Field kNoLoad = [](double, double) { return 0.0; };
 
-Problem edge_problem(int n, double R = 0.0625, SamplingKind kind = SamplingKind::Edge) {
-  return make_problem(make_grid(n), SamplingSpec{kind, circle_edge(0.5, 0.5, 0.25)}, cylinder(0.5, 0.5, 0.25, R),
-                      kNoLoad);
+// The paper's problem (obstacle height R; NaN: the paper's), sampled on the obstacle's rim.
+Problem edge_problem(int n, double R = NAN, SamplingKind kind = SamplingKind::Edge) {
+  const PaperScene& s = paper_scene();
+  return make_problem(make_grid(n), SamplingSpec{kind, s.rim()}, s.obstacle(std::isnan(R) ? s.height : R), kNoLoad);
 }
 
 ExactResult certified(const Problem& p) {
-  ExactResult r = solve_exact(p, cylinder(0.5, 0.5, 0.25, p.phi.maxCoeff()), kNoLoad, ExactOptions{});
+  ExactResult r = solve_exact(p, paper_scene().obstacle(p.phi.maxCoeff()), kNoLoad, ExactOptions{});
   EXPECT_TRUE(r.converged) << r.message;
   EXPECT_LE(r.certificate.worst(), 1e-10);
   return r;
@@ -93,7 +95,7 @@ TEST(DualQP, MatchesBruteForceOverEveryActiveSetWithDependentRows) {
 }
 
 TEST(EdgeSampling, CircleHasTheSquaresSymmetryAndItsLength) {
-  const EdgePoints e = edge_points(circle_edge(0.5, 0.5, 0.25), 1.0 / 64);
+  const EdgePoints e = edge_points(paper_scene().rim(), 1.0 / 64);
   EXPECT_EQ(e.size() % 8, 0);
   EXPECT_NEAR(e.size(), 2 * M_PI * 0.25 * 64, 0.5 * 2 * M_PI * 0.25 * 64);  // about 2 pi r / h
   double length = 0;
@@ -147,7 +149,7 @@ TEST(EdgeSampling, PenaltySchemeApproachesTheExactAnswerLinearlyInEps) {
 }
 
 TEST(EdgeSampling, SymmetricUnderTheSquareAndHomogeneousInR) {
-  const ExactResult r1 = certified(edge_problem(32, 0.0625)), r2 = certified(edge_problem(32, 0.125));
+  const ExactResult r1 = certified(edge_problem(32)), r2 = certified(edge_problem(32, 2 * paper_scene().height));
   EXPECT_LE(max_nodal_abs(r2.w - 2 * r1.w), 1e-13 * max_nodal_abs(r2.w));
   EXPECT_LE((r2.lambda - 2 * r1.lambda).lpNorm<Eigen::Infinity>(), 1e-11 * r2.lambda.lpNorm<Eigen::Infinity>());
   EXPECT_LE(asymmetry(make_grid(32), r1.w), 1e-13 * max_nodal_abs(r1.w));

@@ -9,6 +9,7 @@
 #include "cholesky.hpp"
 #include "eps_sweep.hpp"
 #include "fields.hpp"
+#include "norms.hpp"
 #include "paper_case.hpp"
 #include "scenes.hpp"
 

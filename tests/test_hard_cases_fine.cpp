@@ -9,6 +9,7 @@
 #include "active_set.hpp"
 #include "contraction.hpp"
 #include "eps_sweep.hpp"
+#include "norms.hpp"
 #include "paper_case.hpp"
 
 using namespace plate;
@@ -36,7 +37,7 @@ TEST(FineGrid, LinearSchemeContractsAtTheRateOfTheFirstEigenvalue) {
 TEST(FineGrid, ExactSolverCertifiesAMillionUnknowns) {
   const Problem p = paper_problem(kFine, SamplingKind::Nodes);
   const ExactResult exact =  // grid-sequenced from n = 8, as `plate --scheme exact` runs it
-      solve_exact(p, cylinder(0.5, 0.5, 0.25, 0.0625), [](double, double) { return 0.0; }, ExactOptions{});
+      solve_exact(p, paper_scene().obstacle(), [](double, double) { return 0.0; }, ExactOptions{});
   ASSERT_TRUE(exact.converged) << exact.message;
   EXPECT_LE(exact.certificate.worst(), 1e-10);
   // Symmetric up to round-off magnified by the condition of K, ~ n^4 (measured: 4e-10 relative).
@@ -50,7 +51,7 @@ TEST(FineGrid, NonlinearSchemeAgreesWithTheExactSolver) {
   const int n = kFine / 2;
   const Problem p = paper_problem(n, SamplingKind::Nodes);
   const ExactResult exact =
-      solve_exact(p, cylinder(0.5, 0.5, 0.25, 0.0625), [](double, double) { return 0.0; }, ExactOptions{});
+      solve_exact(p, paper_scene().obstacle(), [](double, double) { return 0.0; }, ExactOptions{});
   ASSERT_TRUE(exact.converged) << exact.message;
   const double eps = 1e-7;
   const SweepRow row = sweep_row(p, Scheme::Nonlinear, eps, 1e-6, 100, exact.w);

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <cctype>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -32,11 +33,66 @@ std::set<std::string> matches(const std::string& text, const std::regex& re, int
 
 std::string all_sources() {
   std::string s;
-  for (const auto& e : fs::directory_iterator(kRoot / "src"))
+  for (const auto& e : fs::recursive_directory_iterator(kRoot / "src"))
     if (e.path().extension() == ".cpp" || e.path().extension() == ".hpp") s += slurp(e.path());
   return s;
 }
+
+std::vector<fs::path> sources(const fs::path& dir, bool recursive) {
+  std::vector<fs::path> out;
+  auto take = [&](const fs::path& p) {
+    if (p.extension() == ".cpp" || p.extension() == ".hpp") out.push_back(p);
+  };
+  if (recursive)
+    for (const auto& e : fs::recursive_directory_iterator(dir)) take(e.path());
+  else
+    for (const auto& e : fs::directory_iterator(dir)) take(e.path());
+  return out;
+}
 }  // namespace
+
+// The layout: src/ holds the mathematics, which starts no process and opens no file; what does
+// (FreeFEM, gmsh, `plate` as a child, reference/ and results/) lives in src/programs/.
+TEST(Layout, TheMathematicsLaunchesNoProcessAndOpensNoFile) {
+  const std::regex io(R"((std::system|popen|fork\(|exec[lv]p?\(|fstream|fopen|<sys/wait.h>|<unistd.h>))");
+  int files = 0;
+  for (const auto& p : sources(kRoot / "src", false)) {
+    ++files;
+    std::smatch m;
+    const std::string code = slurp(p);
+    EXPECT_FALSE(std::regex_search(code, m, io)) << p.filename() << " uses " << m.str();
+  }
+  EXPECT_GE(files, 40);
+}
+
+// No function of src/ or tests/ runs over 100 lines. A function starts at a line in the first
+// column that opens a body, and ends at the next line that begins with "}".
+TEST(Layout, NoFunctionRunsOverAHundredLines) {
+  std::vector<fs::path> files = sources(kRoot / "src", true);
+  for (const auto& p : sources(kRoot / "tests", false)) files.push_back(p);
+  const std::regex not_a_function(R"(^(namespace|using|template|extern|struct|class|enum|union|#|//|\}))");
+  int functions = 0;
+  for (const auto& p : files) {
+    std::istringstream in(slurp(p));
+    std::string line, signature;
+    int start = -1, candidate = -1;
+    for (int k = 1; std::getline(in, line); ++k) {
+      const bool first_column = !line.empty() && !std::isspace(static_cast<unsigned char>(line[0]));
+      if (start < 0) {
+        if (candidate < 0 && first_column && !std::regex_search(line, not_a_function)) candidate = k, signature = line;
+        if (candidate < 0) continue;
+        const char last = line.find_last_not_of(" ") == std::string::npos ? ' ' : line[line.find_last_not_of(" ")];
+        if (last == ';' || last == '}' || (last == '{' && signature.find('(') == std::string::npos)) candidate = -1;
+        else if (last == '{') start = candidate, candidate = -1;
+      } else if (line.rfind("}", 0) == 0) {
+        ++functions;
+        EXPECT_LE(k - start + 1, 100) << p.filename() << ":" << start << " " << signature;
+        start = -1;
+      }
+    }
+  }
+  EXPECT_GE(functions, 300);  // the scan found the functions
+}
 
 TEST(Paper, EveryCodeRegionItNamesExistsInSrc) {
   const std::string doc = slurp(kRoot / "paper/paper.md");

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "norms.hpp"
 #include "paper_case.hpp"
 #include "penalty_bound.hpp"
 #include "schemes.hpp"

@@ -6,6 +6,7 @@
 
 #include "contact.hpp"
 #include "contraction.hpp"
+#include "norms.hpp"
 #include "paper_case.hpp"
 #include "schemes.hpp"
 

@@ -11,11 +11,13 @@
 
 #include "active_set.hpp"
 #include "atomic_file.hpp"
+#include "exit_codes.hpp"
 #include "contact.hpp"
 #include "format.hpp"
 #include "line_force.hpp"
 #include "published.hpp"
 #include "richardson.hpp"
+#include "verdict.hpp"
 #include "stopwatch.hpp"
 
 using namespace plate;
@@ -49,10 +51,10 @@ const std::vector<Quantity> kQuantities = {
 constexpr double kNu = 0.3;
 
 Row solve_one(SamplingKind kind, int n, const std::map<std::string, double>& pub) {
-  const double cx = published(pub, "obstacle_cx"), cy = published(pub, "obstacle_cy"), r = published(pub, "obstacle_radius");
-  const Field phi = paper_obstacle(pub), no_load = [](double, double) { return 0.0; };
+  const PaperScene scene = paper_scene(pub);
+  const Field phi = scene.obstacle(), no_load = [](double, double) { return 0.0; };
   const auto t0 = Clock::now();
-  const Problem p = make_problem(make_grid(n), SamplingSpec{kind, circle_edge(cx, cy, r)}, phi, no_load);
+  const Problem p = make_problem(make_grid(n), SamplingSpec{kind, scene.rim()}, phi, no_load);
   const ExactResult x = solve_exact(p, phi, no_load, ExactOptions{});
   Row row;
   row.seconds = seconds_since(t0);
@@ -64,7 +66,7 @@ Row solve_one(SamplingKind kind, int n, const std::map<std::string, double>& pub
   row.w_mid = evaluate(p.grid, x.w, 0.5, 0.125).w;
   row.w_diag = evaluate(p.grid, x.w, 0.25, 0.25).w;
   row.force = total_contact_force(p, x.lambda);
-  row.mean_line = row.force / (2 * M_PI * r);  // with f = 0 the whole push is on the rim
+  row.mean_line = row.force / (2 * M_PI * scene.radius);  // with f = 0 the whole push is on the rim
   row.line = line_force(p, x.lambda);
   // The smoothed line load: point values scatter about it by some 10% (see line_force.hpp).
   if (!row.line.empty()) row.q0 = line_force_fit(row.line, 0), row.q45 = line_force_fit(row.line, M_PI / 4);
@@ -183,7 +185,7 @@ std::string markdown(const Study& s) {
       if (e.orders.empty()) continue;
       o << "| " << q.name << " | " << to_string(k) << " | ";
       for (size_t i = 0; i < e.orders.size(); ++i) o << (i ? ", " : "") << format_order(e.orders[i], e.order_noise[i]);
-      o << " | " << e.verdict << " |\n";
+      o << " | " << verdict(e) << " |\n";
     }
   return o.str();
 }
@@ -254,7 +256,8 @@ int main(int argc, char** argv) {
   app.add_option("--numbers", numbers, "the paper's numbers (obstacle)")->check(CLI::ExistingFile)->capture_default_str();
   app.add_option("--coarsest", coarsest, "cells on the coarsest grid")->check(CLI::Range(2, 1024))->capture_default_str();
   app.add_option("--finest", finest, "cells on the finest grid")->check(CLI::Range(8, 2048))->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.footer(kExitStatusHelp);
+  if (const int status = parse_options(app, argc, argv, "continuum"); status >= 0) return status;
   try {
     if (finest < 4 * coarsest) throw std::invalid_argument("--finest must be at least 4 times --coarsest (three grids)");
     const auto pub = read_paper_numbers(numbers);
@@ -280,13 +283,13 @@ int main(int argc, char** argv) {
     write_file_atomically(out + "/continuum.md", markdown(s));
     write_file_atomically(out + "/continuum_timings.csv", timings.str());
     for (const Row& r : s.rows)
-      if (!r.certified) return 3;
-    return 0;
+      if (!r.certified) return kNotConverged;
+    return kSuccess;
   } catch (const std::invalid_argument& e) {
     std::cerr << "continuum: bad input: " << e.what() << "\n";
-    return 2;
+    return kBadInput;
   } catch (const std::exception& e) {
     std::cerr << "continuum: error: " << e.what() << "\n";
-    return 4;
+    return kFailure;
   }
 }

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "atomic_file.hpp"
+#include "exit_codes.hpp"
 #include "format.hpp"
 #include "contraction.hpp"
 #include "published.hpp"
@@ -25,10 +26,11 @@ int main(int argc, char** argv) {
   app.add_option("--out", out, "folder for the report")->capture_default_str();
   app.add_option("--n", grids, "grids n (h = 1/n)")->delimiter(',')->check(CLI::Range(2, 256))->capture_default_str();
   app.add_option("--eps", epss, "penalty parameters")->delimiter(',')->check(CLI::Range(1e-8, 1.0))->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.footer(kExitStatusHelp);
+  if (const int status = parse_options(app, argc, argv, "contraction"); status >= 0) return status;
   try {
-    const auto pub = read_paper_numbers(reference + "/paper_numbers.csv");
-    const Field paper_phi = paper_obstacle(pub);
+    const PaperScene scene = read_paper_scene(reference);
+    const Field paper_phi = scene.obstacle();
     std::ostringstream md;
     md << "<!-- Written by build/contraction (make results); do not edit. -->\n\n"
        << "| h | sampling | eps | lambda_1h | q = 1/(1 + eps lambda_1h) | measured, no contact | slowest, paper's obstacle"
@@ -57,7 +59,7 @@ int main(int argc, char** argv) {
     write_file_atomically(out + "/contraction.md", md.str());
   } catch (const std::exception& e) {
     std::cerr << "contraction: " << e.what() << "\n";
-    return 4;
+    return kFailure;
   }
-  return 0;
+  return kSuccess;
 }

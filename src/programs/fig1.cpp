@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "atomic_file.hpp"
+#include "exit_codes.hpp"
 #include "format.hpp"
 #include "contact.hpp"
 #include "crosscheck.hpp"
@@ -29,11 +30,12 @@ int main(int argc, char** argv) {
   app.add_option("--lattice", lattice, "the surface is evaluated on (lattice + 1)^2 points")->check(CLI::Range(2, 1000))->capture_default_str();
   app.add_option("--sampling", sampling, "gauss or nodes")->check(CLI::IsMember({"gauss", "nodes"}))->capture_default_str();
   app.add_option("--eps", eps, "penalty parameter (exact discrete w_eps)")->check(CLI::Range(1e-14, 1e-3))->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.footer(kExitStatusHelp);
+  if (const int status = parse_options(app, argc, argv, "fig1"); status >= 0) return status;
 
   try {
-    const auto pub = read_paper_numbers(reference + "/paper_numbers.csv");
-    const Field phi = paper_obstacle(pub);
+    const PaperScene scene = read_paper_scene(reference);
+    const Field phi = scene.obstacle();
     const SamplingKind kind = sampling == "gauss" ? SamplingKind::Gauss : SamplingKind::Nodes;
     const Grid g = make_grid(n);
     const Problem p = make_problem(g, kind, phi, [](double, double) { return 0.0; });
@@ -62,7 +64,7 @@ int main(int argc, char** argv) {
     write_file_atomically(out + "/fig1_contact.dat", contact.str());
   } catch (const std::exception& e) {
     std::cerr << "fig1: " << e.what() << "\n";
-    return 4;
+    return kFailure;
   }
-  return 0;
+  return kSuccess;
 }

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "atomic_file.hpp"
+#include "exit_codes.hpp"
 #include "format.hpp"
 #include "contact.hpp"
 #include "eps_limit.hpp"
@@ -35,7 +36,7 @@ struct Point {
 // positively homogeneous in (R, w) at fixed eps, so every quantity below is exactly linear in R.
 Point measure(int n, SamplingKind kind, double R, double eps, double nu, const std::map<std::string, double>& pub) {
   const double r = published(pub, "obstacle_radius");
-  const Field phi = paper_obstacle(pub, R);
+  const Field phi = paper_scene(pub).obstacle(R);
   const Problem p = make_problem(make_grid(n), kind, phi, [](double, double) { return 0.0; });
   const VectorXd w = penalised_path(p, eps).back();
   const NodalFields f = nodal_fields(p, w, phi, eps, nu);
@@ -103,11 +104,12 @@ int main(int argc, char** argv) {
   app.add_option("--eps", eps, "the penalty parameter of every run (exact discrete w_eps)")->check(CLI::Range(1e-14, 1e-3))->capture_default_str();
   app.add_option("--nu", nu, "Poisson ratio in m12 = -(1 - nu) w12")->check(CLI::Range(0.0, 0.5))->capture_default_str();
   app.add_option("--mesh", mesh, "grids n of the mesh study at the paper's R")->delimiter(',')->check(CLI::PositiveNumber)->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.footer(kExitStatusHelp);
+  if (const int status = parse_options(app, argc, argv, "fig2"); status >= 0) return status;
 
   try {
     const auto pub = read_paper_numbers(reference + "/paper_numbers.csv");
-    const int n_paper = paper_cells(pub);
+    const int n_paper = paper_scene(pub).cells;
     std::vector<Point> sweep, study;
     std::ostringstream fit;
     fit << "<!-- Written by build/fig2 (make results); do not edit. -->\n\n"
@@ -141,7 +143,7 @@ int main(int argc, char** argv) {
     write_file_atomically(out + "/fig2_mesh.md", mesh_markdown(study, R_paper));
   } catch (const std::exception& e) {
     std::cerr << "fig2: " << e.what() << "\n";
-    return 4;
+    return kFailure;
   }
-  return 0;
+  return kSuccess;
 }

@@ -10,6 +10,7 @@
 
 #include "active_set.hpp"
 #include "atomic_file.hpp"
+#include "exit_codes.hpp"
 #include "contraction.hpp"
 #include "eps_limit.hpp"
 #include "eps_sweep.hpp"
@@ -24,6 +25,15 @@
 using namespace plate;
 
 namespace {
+
+// What every section of the report needs: the published constants, the paper's scene, the
+// `plate` program and a scratch folder.
+struct Context {
+  double lambda1 = 0, point = 0, sag = 0;
+  PaperScene scene;
+  std::string plate, cases, scratch;
+  int fine = 512;
+};
 
 std::string yes_no(bool b) { return b ? "yes" : "**no**"; }
 
@@ -92,6 +102,185 @@ void interrupted(std::ostream& md, const std::string& plate, const std::string& 
      << "\", files left in the output folder: " << r.files_left << ".\n\n";
 }
 
+// Each eps alone on the paper's problem, nodal and Gauss sampling, against an eps-free reference.
+void small_eps(std::ostream& md, const Context& c) {
+  md << "### Small eps\n\nThe paper's problem, each eps alone (no continuation) from w = 0, tol = 1e-8, at most "
+        "20000 iterations. A run is certified when its steps met tol and the error bound from the residual of (2a) "
+        "is within tol. \"predicted (5a)\" is 1 + ln(first step / tol) / ln(1 + eps lambda_1) with the published "
+        "lambda_1 = " << fmt("%.5f", c.lambda1) << ": Theorem 2 says (5a) needs no more.\n\n";
+  {
+    const Problem p = make_problem(make_grid(16), SamplingKind::Nodes, c.scene.obstacle(), uniform(0));
+    const ExactResult exact = solve_exact(p, ExactOptions{});
+    md << "**h = 1/16, nodal sampling**, against the exact-constraint solution (certificate "
+       << fmt("%.1e", exact.certificate.worst()) << "):\n\n";
+    eps_sweep(md, p, exact.w, "exact", 1e-8, 20000, c.lambda1);
+  }
+  for (int n : {16, 4}) {  // 4: the paper's own grid
+    const Problem p = make_problem(make_grid(n), SamplingKind::Gauss, c.scene.obstacle(), uniform(0));
+    const EpsLimit limit = eps_limit(p);
+    md << "**h = 1/" << n << ", Gauss sampling**" << (n == 4 ? " (the paper's grid and (8) as printed)" : "")
+       << ", against the eps -> 0 limit extrapolated from eps = 1e-12 (error ratio per decade "
+       << fmt("%.3f", limit.ratio) << "; the limit is uncertain by " << fmt("%.0e", limit.estimate) << "):\n\n";
+    eps_sweep(md, p, limit.w, "eps-limit", 1e-8, 20000, c.lambda1);
+  }
+}
+
+// An obstacle at one node acts as a point load: w_c / P against Timoshenko's coefficient.
+void point_obstacle(std::ostream& md, const Context& c) {
+  md << "### A point obstacle\n\nHeight 0.01 at the centre node only, f = 0, exact-constraint solver. The obstacle "
+        "acts as a point load P, so w_c / P must approach the published coefficient " << c.point
+     << " (Timoshenko & Woinowsky-Krieger).\n\n| n | touching nodes | P | w_c / P | relative difference |\n"
+        "|---:|---:|---:|---:|---:|\n";
+  for (int n : {16, 32, 64, 128}) {
+    const Grid g = make_grid(n);
+    const Problem p = make_problem(g, SamplingKind::Nodes, centre_spike(g, 0.01), uniform(0));
+    const ExactResult r = solve_exact(p, ExactOptions{});
+    const double P = p.sampling.weights.dot(r.lambda);
+    md << "| " << n << " | " << members(r.active) << " | " << fmt("%.4f", P) << " | " << fmt("%.7f", 0.01 / P) << " | "
+       << fmt("%+.2e", (0.01 / P - c.point) / c.point) << (r.converged ? "" : " (not converged)") << " |\n";
+  }
+}
+
+// Contact on an area: where it starts (the published sag), and how the active set grows with n.
+void flat_support(std::ostream& md, const Context& c) {
+  md << "\n### A flat support: contact on an area\n\nf = -q, phi = -R everywhere (q = 1), exact-constraint solver. "
+        "The free plate sags by " << c.sag << " q at the centre (published), so contact must start when R drops below "
+        "that; inside the contact area w = -R, so Lap^2 w = 0 and the force density equals q.\n\n";
+  for (double factor : {1.01, 0.99}) {
+    const ExactResult r = solve_exact(make_grid(32), uniform(-c.sag * factor), uniform(-1), ExactOptions{});
+    md << "- n = 32, R = " << fmt("%.2f", factor) << " x the published sag: " << members(r.active) << " touching nodes"
+       << (r.converged ? "" : " (not converged)") << ".\n";
+  }
+  md << "\nR = 5e-4, grid-sequenced (the default: each grid starts from the contact set of the one twice as coarse) "
+        "and, up to n = 128, from an empty set:\n\n| n | touching nodes | ratio to the coarser grid | force density at "
+        "the centre | total force | PDAS its | factorisations | s | cold start: PDAS its | cold start: s |\n"
+        "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  int previous = 0;
+  for (int n : {32, 64, 128, 256}) {
+    const Grid g = make_grid(n);
+    const Problem p = make_problem(g, SamplingKind::Nodes, uniform(-5e-4), uniform(-1));
+    std::cerr << "hard_cases: flat support, n = " << n << "\n";
+    auto t0 = Clock::now();
+    const ExactResult r = solve_exact(p, uniform(-5e-4), uniform(-1), ExactOptions{});
+    const double s = seconds_since(t0);
+    const ExactLevel& l = r.levels.back();
+    md << "| " << n << " | " << members(r.active) << " | "
+       << (previous ? fmt("%.2f", double(members(r.active)) / previous) : std::string("")) << " | "
+       << fmt("%.5f", r.lambda[g.node(n / 2, n / 2)]) << " | " << fmt("%.5f", p.sampling.weights.dot(r.lambda))
+       << " | " << l.pdas_iterations << " | " << l.factorizations << " | " << fmt("%.2f", s)
+       << (r.converged ? "" : " (not converged)") << " | ";
+    if (n <= 128) {
+      t0 = Clock::now();
+      const ExactResult cold = solve_exact(p, ExactOptions{});
+      md << cold.levels.back().pdas_iterations << " | " << fmt("%.2f", seconds_since(t0)) << " |\n";
+    } else {
+      md << " | |\n";
+    }
+    previous = members(r.active);
+  }
+  md << "\nThe number of touching nodes grows about 4 times per halving of h, as an area does (a curve would give "
+        "2), and the force density at the centre tends to q. From an empty set the primal-dual iteration needs "
+        "about n/2 iterations here, most with their own factorisation, so its cost grows like n times a "
+        "factorisation; started from the coarser grid's contact set it needs a handful.\n\n";
+}
+
+// Sixteen bumps: many contact regions, the exact solver against (3a).
+void many_regions(std::ostream& md, const Context&) {
+  md << "### Many contact regions\n\nSixteen bumps, phi = -1 + 0.99 (sin 4 pi x sin 4 pi y)^4 (tops at -0.01), "
+        "under f = -q, n = 64, exact-constraint solver; regions are connected groups of touching nodes (neighbours "
+        "along grid lines and diagonals). The regions come in the symmetry orbits of the square (4 inner, 8 edge, "
+        "4 corner bumps). (3a) at eps = 1e-10 is a second algorithm for the same answer.\n\n"
+        "| q | regions | touching nodes | certificate | (3a) certified | (3a) regions | (3a) vs exact | eps max lambda |\n"
+        "|---:|---:|---:|---:|:---:|---:|---:|---:|\n";
+  for (double q : {100.0, 300.0, 1000.0}) {
+    const Grid g = make_grid(64);
+    const Problem p = make_problem(g, SamplingKind::Nodes, bumps(4, -1.0, -0.01), uniform(-q));
+    const ExactResult r = solve_exact(p, ExactOptions{});
+    const SweepRow pen = sweep_row(p, Scheme::Nonlinear, 1e-10, 1e-8, 100, r.w);
+    const VectorXd xi = contact_force_density(p, pen.w, 1e-10);
+    NodeSet touched(xi.size());
+    for (int k = 0; k < xi.size(); ++k) touched[k] = xi[k] > 0;
+    md << "| " << q << " | " << contact_regions(g, r.active) << " | " << members(r.active) << " | "
+       << fmt("%.1e", r.certificate.worst()) << " | " << yes_no(pen.converged) << " | " << contact_regions(g, touched)
+       << " | " << fmt("%.1e", pen.error) << " | " << fmt("%.1e", 1e-10 * r.lambda.maxCoeff()) << " |\n";
+  }
+}
+
+// Complementarity's degenerate case: touched with zero force.
+void just_touching_obstacle(std::ostream& md, const Context&) {
+  const JustTouching s = just_touching(32);
+  const Problem& p = s.touching;
+  const ExactResult r = solve_exact(p, ExactOptions{});
+  md << "\n### An obstacle that just touches\n\nf = 1 lifts the free plate to w_free; an obstacle at the centre "
+        "node of exactly the free plate's height there is touched with zero force (n = 32): total force "
+     << fmt("%.1e", p.sampling.weights.dot(r.lambda)) << " (load " << fmt("%.1e", s.free_plate.F.lpNorm<1>())
+     << "), max |w - w_free| = " << fmt("%.1e", (r.w - s.w_free).lpNorm<Eigen::Infinity>()) << ", certificate "
+     << fmt("%.1e", r.certificate.worst()) << ".\n\n";
+}
+
+// The paper's problem at n = fine: the exact solver and both schemes, and (5a)'s rate.
+void million_unknowns(std::ostream& md, const Context& c) {
+  md << "### A million unknowns (n = " << c.fine << ")\n\nThe paper's problem, nodal sampling.\n\n"
+        "| solver | settings | certified | iterations | factorisations | s | error bound or certificate | "
+        "vs exact |\n|---|---|:---:|---:|---:|---:|---:|---:|\n";
+  const Problem p = make_problem(make_grid(c.fine), SamplingKind::Nodes, c.scene.obstacle(), uniform(0));
+  std::cerr << "hard_cases: n = " << c.fine << ", exact\n";
+  const auto t0 = Clock::now();
+  const ExactResult exact = solve_exact(p, c.scene.obstacle(), uniform(0), ExactOptions{});
+  const double s_exact = seconds_since(t0);
+  int exact_f = 0;
+  for (const auto& l : exact.levels) exact_f += l.factorizations;
+  md << "| exact | tol 1e-10 | " << yes_no(exact.converged) << " | " << exact.levels.back().pdas_iterations << " | "
+     << exact_f << " | " << fmt("%.1f", s_exact) << " | " << fmt("%.1e", exact.certificate.worst()) << " | |\n";
+  std::vector<double> linear_steps;  // (5a)'s steps in the norm of Theorem 2
+  for (auto [s, eps, tol] : {std::tuple{Scheme::Nonlinear, 1e-7, 1e-6}, std::tuple{Scheme::Linear, 1e-4, 1e-6}}) {
+    std::cerr << "hard_cases: n = " << c.fine << ", " << to_string(s) << "\n";
+    const SweepRow r = sweep_row(p, s, eps, tol, 2000, exact.w);
+    if (s == Scheme::Linear) linear_steps = r.steps;
+    md << "| " << (s == Scheme::Linear ? "(5a)" : "(3a)") << " | eps " << fmt("%.0e", eps) << ", tol "
+       << fmt("%.0e", tol) << " | " << yes_no(r.converged) << " | " << r.iterations << " | " << r.factorizations
+       << " | " << fmt("%.1f", r.seconds) << " | " << fmt("%.1e", r.bound.bound) << " | " << fmt("%.1e", r.error)
+       << " |\n";
+  }
+  md << "\nAt the same eps the penalised solution is further from the exact one here than on n = 16 (the "
+        "nodal table above): the contact force concentrates on the rim, and its nodal density grows as h "
+        "falls.\n";
+  const Problem free = make_problem(make_grid(c.fine), SamplingKind::Nodes, uniform(-1), uniform(1));
+  const double eps = 1e-3;
+  const std::vector<double> steps = linear_step_norms(free, eps, 30);
+  const double factor = asymptotic_factor(steps), measured = (1 / factor - 1) / eps;
+  md << "\nThe linear scheme's rate. Without contact (f = 1, phi = -1) at eps = 1e-3, steps shrink by "
+     << fmt("%.9f", factor) << " per iteration, which is 1/(1 + eps lambda) with lambda = " << fmt("%.4f", measured)
+     << "; the published first eigenvalue is " << fmt("%.5f", c.lambda1) << " (relative difference "
+     << fmt("%.1e", (measured - c.lambda1) / c.lambda1) << "). On the paper's problem, in the (5a) run above, the slowest of its "
+     << linear_steps.size() << " steps (those above 1e-6 of the first) shrank by " << fmt("%.6f", slowest_factor(linear_steps, 0.0)) << ", within Theorem 2's bound "
+     << fmt("%.6f", 1 / (1 + 1e-4 * c.lambda1)) << ".\n\n";
+}
+
+// The 3 x 3 case on which plain primal-dual active sets cycle, and the fallback that does not.
+void cycling_active_set(std::ostream& md, const Context&) {
+  const Problem p = cycling_problem();
+  ExactOptions plain;
+  plain.globalise = false;
+  const ExactResult a = solve_exact(p, plain), b = solve_exact(p, ExactOptions{});
+  md << "### The active set that cycles\n\nA 3 x 3 complementarity problem with a symmetric positive definite "
+        "matrix that is not an M-matrix (tests/test_active_set.cpp; the plate's own matrices gave none). Plain "
+        "primal-dual active sets: converged " << yes_no(a.converged) << ", message \"" << table_cell(a.message)
+     << "\". With the monotone fallback (the default): converged " << yes_no(b.converged) << " after "
+     << b.levels.back().primal_steps << " fallback steps, energies";
+  for (double e : b.fallback_energies) md << " " << fmt("%.6g", e);
+  md << " (strictly falling), certificate " << fmt("%.1e", b.certificate.worst()) << ".\n\n";
+}
+
+// Every line of the bad-input list, and an interrupted run.
+void bad_inputs(std::ostream& md, const Context& c) {
+  md << "### Bad input\n\nEvery line of `tests/bad_input.tsv`, run through `plate -q` (with `--json` to a scratch "
+        "file). Status 2 is bad input, 3 not converged (the outputs are written and say so), 4 another failure. "
+        "The same list is a test in `make test`.\n\n";
+  bad_input(md, c.plate, c.cases, c.scratch);
+  md << "**An interrupted run.** ";
+  interrupted(md, c.plate, c.scratch);
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -99,191 +288,35 @@ int main(int argc, char** argv) {
   CLI::App app{"hard_cases: the cases the paper did not try (tiny eps, point and area contact, many contact regions,\n"
                "zero-force contact, n = 512, the cycling active set) and every kind of bad input for `plate`;\n"
                "writes hard_cases.md."};
-  std::string out = "results", reference = "reference", cases = "tests/bad_input.tsv", scratch = "build/hard-cases-work";
-  std::string plate = (std::filesystem::path(argv[0]).parent_path() / "plate").string();
-  int fine = 512;
+  std::string out = "results", reference = "reference";
+  Context c;
+  c.cases = "tests/bad_input.tsv", c.scratch = "build/hard-cases-work";
+  c.plate = (std::filesystem::path(argv[0]).parent_path() / "plate").string();
   app.add_option("--out", out, "folder for the report")->capture_default_str();
-  app.add_option("--reference", reference, "folder with plate_constants.csv")->check(CLI::ExistingDirectory)->capture_default_str();
-  app.add_option("--cases", cases, "the bad-input list")->check(CLI::ExistingFile)->capture_default_str();
-  app.add_option("--plate", plate, "the plate program")->check(CLI::ExistingFile)->capture_default_str();
-  app.add_option("--scratch", scratch, "folder for temporary files")->capture_default_str();
-  app.add_option("--fine", fine, "the fine grid n")->check(CLI::Range(8, 4096))->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.add_option("--reference", reference, "folder with plate_constants.csv and paper_numbers.csv")
+      ->check(CLI::ExistingDirectory)->capture_default_str();
+  app.add_option("--cases", c.cases, "the bad-input list")->check(CLI::ExistingFile)->capture_default_str();
+  app.add_option("--plate", c.plate, "the plate program")->check(CLI::ExistingFile)->capture_default_str();
+  app.add_option("--scratch", c.scratch, "folder for temporary files")->capture_default_str();
+  app.add_option("--fine", c.fine, "the fine grid n")->check(CLI::Range(8, 4096))->capture_default_str();
+  app.footer(kExitStatusHelp);
+  if (const int status = parse_options(app, argc, argv, "hard_cases"); status >= 0) return status;
   try {
-    std::filesystem::create_directories(scratch);
-    const auto constants = read_paper_numbers(reference + "/plate_constants.csv");
-    const double lambda1 = published(constants, "lambda1"), point = published(constants, "point_centre"),
-                 sag = published(constants, "uniform_centre");
+    std::filesystem::create_directories(c.scratch);
+    c.lambda1 = plate_constant(reference, "lambda1");
+    c.point = plate_constant(reference, "point_centre");
+    c.sag = plate_constant(reference, "uniform_centre");
+    c.scene = read_paper_scene(reference);
     std::ostringstream md;
     md << "<!-- Written by build/hard_cases (make all); do not edit. -->\n\n";
-
-    // --- eps -> 0 ---
-    md << "### Small eps\n\nThe paper's problem, each eps alone (no continuation) from w = 0, tol = 1e-8, at most "
-          "20000 iterations. A run is certified when its steps met tol and the error bound from the residual of (2a) "
-          "is within tol. \"predicted (5a)\" is 1 + ln(first step / tol) / ln(1 + eps lambda_1) with the published "
-          "lambda_1 = " << fmt("%.5f", lambda1) << ": Theorem 2 says (5a) needs no more.\n\n";
-    {
-      const Problem p = make_problem(make_grid(16), SamplingKind::Nodes, cylinder(0.5, 0.5, 0.25, 0.0625), uniform(0));
-      const ExactResult exact = solve_exact(p, ExactOptions{});
-      md << "**h = 1/16, nodal sampling**, against the exact-constraint solution (certificate "
-         << fmt("%.1e", exact.certificate.worst()) << "):\n\n";
-      eps_sweep(md, p, exact.w, "exact", 1e-8, 20000, lambda1);
-    }
-    for (int n : {16, 4}) {  // 4: the paper's own grid
-      const Problem p = make_problem(make_grid(n), SamplingKind::Gauss, cylinder(0.5, 0.5, 0.25, 0.0625), uniform(0));
-      const EpsLimit limit = eps_limit(p);
-      md << "**h = 1/" << n << ", Gauss sampling**" << (n == 4 ? " (the paper's grid and (8) as printed)" : "")
-         << ", against the eps -> 0 limit extrapolated from eps = 1e-12 (error ratio per decade "
-         << fmt("%.3f", limit.ratio) << "; the limit is uncertain by " << fmt("%.0e", limit.estimate) << "):\n\n";
-      eps_sweep(md, p, limit.w, "eps-limit", 1e-8, 20000, lambda1);
-    }
-    // --- point obstacle ---
-    md << "### A point obstacle\n\nHeight 0.01 at the centre node only, f = 0, exact-constraint solver. The obstacle "
-          "acts as a point load P, so w_c / P must approach the published coefficient " << point
-       << " (Timoshenko & Woinowsky-Krieger).\n\n| n | touching nodes | P | w_c / P | relative difference |\n"
-          "|---:|---:|---:|---:|---:|\n";
-    for (int n : {16, 32, 64, 128}) {
-      const Grid g = make_grid(n);
-      const Problem p = make_problem(g, SamplingKind::Nodes, centre_spike(g, 0.01), uniform(0));
-      const ExactResult r = solve_exact(p, ExactOptions{});
-      const double P = p.sampling.weights.dot(r.lambda);
-      md << "| " << n << " | " << members(r.active) << " | " << fmt("%.4f", P) << " | " << fmt("%.7f", 0.01 / P) << " | "
-         << fmt("%+.2e", (0.01 / P - point) / point) << (r.converged ? "" : " (not converged)") << " |\n";
-    }
-    // --- flat support ---
-    md << "\n### A flat support: contact on an area\n\nf = -q, phi = -R everywhere (q = 1), exact-constraint solver. "
-          "The free plate sags by " << sag << " q at the centre (published), so contact must start when R drops below "
-          "that; inside the contact area w = -R, so Lap^2 w = 0 and the force density equals q.\n\n";
-    for (double factor : {1.01, 0.99}) {
-      const ExactResult r = solve_exact(make_grid(32), uniform(-sag * factor), uniform(-1), ExactOptions{});
-      md << "- n = 32, R = " << fmt("%.2f", factor) << " x the published sag: " << members(r.active) << " touching nodes"
-         << (r.converged ? "" : " (not converged)") << ".\n";
-    }
-    md << "\nR = 5e-4, grid-sequenced (the default: each grid starts from the contact set of the one twice as coarse) "
-          "and, up to n = 128, from an empty set:\n\n| n | touching nodes | ratio to the coarser grid | force density at "
-          "the centre | total force | PDAS its | factorisations | s | cold start: PDAS its | cold start: s |\n"
-          "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-    int previous = 0;
-    for (int n : {32, 64, 128, 256}) {
-      const Grid g = make_grid(n);
-      const Problem p = make_problem(g, SamplingKind::Nodes, uniform(-5e-4), uniform(-1));
-      std::cerr << "hard_cases: flat support, n = " << n << "\n";
-      auto t0 = Clock::now();
-      const ExactResult r = solve_exact(p, uniform(-5e-4), uniform(-1), ExactOptions{});
-      const double s = seconds_since(t0);
-      const ExactLevel& l = r.levels.back();
-      md << "| " << n << " | " << members(r.active) << " | "
-         << (previous ? fmt("%.2f", double(members(r.active)) / previous) : std::string("")) << " | "
-         << fmt("%.5f", r.lambda[g.node(n / 2, n / 2)]) << " | " << fmt("%.5f", p.sampling.weights.dot(r.lambda))
-         << " | " << l.pdas_iterations << " | " << l.factorizations << " | " << fmt("%.2f", s)
-         << (r.converged ? "" : " (not converged)") << " | ";
-      if (n <= 128) {
-        t0 = Clock::now();
-        const ExactResult cold = solve_exact(p, ExactOptions{});
-        md << cold.levels.back().pdas_iterations << " | " << fmt("%.2f", seconds_since(t0)) << " |\n";
-      } else {
-        md << " | |\n";
-      }
-      previous = members(r.active);
-    }
-    md << "\nThe number of touching nodes grows about 4 times per halving of h, as an area does (a curve would give "
-          "2), and the force density at the centre tends to q. From an empty set the primal-dual iteration needs "
-          "about n/2 iterations here, most with their own factorisation, so its cost grows like n times a "
-          "factorisation; started from the coarser grid's contact set it needs a handful.\n\n";
-    // --- bumps ---
-    md << "### Many contact regions\n\nSixteen bumps, phi = -1 + 0.99 (sin 4 pi x sin 4 pi y)^4 (tops at -0.01), "
-          "under f = -q, n = 64, exact-constraint solver; regions are connected groups of touching nodes (neighbours "
-          "along grid lines and diagonals). The regions come in the symmetry orbits of the square (4 inner, 8 edge, "
-          "4 corner bumps). (3a) at eps = 1e-10 is a second algorithm for the same answer.\n\n"
-          "| q | regions | touching nodes | certificate | (3a) certified | (3a) regions | (3a) vs exact | eps max lambda |\n"
-          "|---:|---:|---:|---:|:---:|---:|---:|---:|\n";
-    for (double q : {100.0, 300.0, 1000.0}) {
-      const Grid g = make_grid(64);
-      const Problem p = make_problem(g, SamplingKind::Nodes, bumps(4, -1.0, -0.01), uniform(-q));
-      const ExactResult r = solve_exact(p, ExactOptions{});
-      const SweepRow pen = sweep_row(p, Scheme::Nonlinear, 1e-10, 1e-8, 100, r.w);
-      const VectorXd xi = contact_force_density(p, pen.w, 1e-10);
-      NodeSet touched(xi.size());
-      for (int k = 0; k < xi.size(); ++k) touched[k] = xi[k] > 0;
-      md << "| " << q << " | " << contact_regions(g, r.active) << " | " << members(r.active) << " | "
-         << fmt("%.1e", r.certificate.worst()) << " | " << yes_no(pen.converged) << " | " << contact_regions(g, touched)
-         << " | " << fmt("%.1e", pen.error) << " | " << fmt("%.1e", 1e-10 * r.lambda.maxCoeff()) << " |\n";
-    }
-    // --- just touching ---
-    {
-      const JustTouching s = just_touching(32);
-      const Problem& p = s.touching;
-      const ExactResult r = solve_exact(p, ExactOptions{});
-      md << "\n### An obstacle that just touches\n\nf = 1 lifts the free plate to w_free; an obstacle at the centre "
-            "node of exactly the free plate's height there is touched with zero force (n = 32): total force "
-         << fmt("%.1e", p.sampling.weights.dot(r.lambda)) << " (load " << fmt("%.1e", s.free_plate.F.lpNorm<1>())
-         << "), max |w - w_free| = " << fmt("%.1e", (r.w - s.w_free).lpNorm<Eigen::Infinity>()) << ", certificate "
-         << fmt("%.1e", r.certificate.worst()) << ".\n\n";
-    }
-    // --- fine grid ---
-    {
-      md << "### A million unknowns (n = " << fine << ")\n\nThe paper's problem, nodal sampling.\n\n"
-            "| solver | settings | certified | iterations | factorisations | s | error bound or certificate | "
-            "vs exact |\n|---|---|:---:|---:|---:|---:|---:|---:|\n";
-      const Problem p = make_problem(make_grid(fine), SamplingKind::Nodes, cylinder(0.5, 0.5, 0.25, 0.0625), uniform(0));
-      std::cerr << "hard_cases: n = " << fine << ", exact\n";
-      const auto t0 = Clock::now();
-      const ExactResult exact = solve_exact(p, cylinder(0.5, 0.5, 0.25, 0.0625), uniform(0), ExactOptions{});
-      const double s_exact = seconds_since(t0);
-      int exact_f = 0;
-      for (const auto& l : exact.levels) exact_f += l.factorizations;
-      md << "| exact | tol 1e-10 | " << yes_no(exact.converged) << " | " << exact.levels.back().pdas_iterations << " | "
-         << exact_f << " | " << fmt("%.1f", s_exact) << " | " << fmt("%.1e", exact.certificate.worst()) << " | |\n";
-      std::vector<double> linear_steps;  // (5a)'s steps in the norm of Theorem 2
-      for (auto [s, eps, tol] : {std::tuple{Scheme::Nonlinear, 1e-7, 1e-6}, std::tuple{Scheme::Linear, 1e-4, 1e-6}}) {
-        std::cerr << "hard_cases: n = " << fine << ", " << to_string(s) << "\n";
-        const SweepRow r = sweep_row(p, s, eps, tol, 2000, exact.w);
-        if (s == Scheme::Linear) linear_steps = r.steps;
-        md << "| " << (s == Scheme::Linear ? "(5a)" : "(3a)") << " | eps " << fmt("%.0e", eps) << ", tol "
-           << fmt("%.0e", tol) << " | " << yes_no(r.converged) << " | " << r.iterations << " | " << r.factorizations
-           << " | " << fmt("%.1f", r.seconds) << " | " << fmt("%.1e", r.bound.bound) << " | " << fmt("%.1e", r.error)
-           << " |\n";
-      }
-      md << "\nAt the same eps the penalised solution is further from the exact one here than on n = 16 (the "
-            "nodal table above): the contact force concentrates on the rim, and its nodal density grows as h "
-            "falls.\n";
-      const Problem free = make_problem(make_grid(fine), SamplingKind::Nodes, uniform(-1), uniform(1));
-      const double eps = 1e-3;
-      const std::vector<double> steps = linear_step_norms(free, eps, 30);
-      const double factor = asymptotic_factor(steps), measured = (1 / factor - 1) / eps;
-      md << "\nThe linear scheme's rate. Without contact (f = 1, phi = -1) at eps = 1e-3, steps shrink by "
-         << fmt("%.9f", factor) << " per iteration, which is 1/(1 + eps lambda) with lambda = " << fmt("%.4f", measured)
-         << "; the published first eigenvalue is " << fmt("%.5f", lambda1) << " (relative difference "
-         << fmt("%.1e", (measured - lambda1) / lambda1) << "). On the paper's problem, in the (5a) run above, the slowest of its "
-         << linear_steps.size() << " steps (those above 1e-6 of the first) shrank by " << fmt("%.6f", slowest_factor(linear_steps, 0.0)) << ", within Theorem 2's bound "
-         << fmt("%.6f", 1 / (1 + 1e-4 * lambda1)) << ".\n\n";
-    }
-    // --- cycling ---
-    {
-      const Problem p = cycling_problem();
-      ExactOptions plain;
-      plain.globalise = false;
-      const ExactResult a = solve_exact(p, plain), b = solve_exact(p, ExactOptions{});
-      md << "### The active set that cycles\n\nA 3 x 3 complementarity problem with a symmetric positive definite "
-            "matrix that is not an M-matrix (tests/test_active_set.cpp; the plate's own matrices gave none). Plain "
-            "primal-dual active sets: converged " << yes_no(a.converged) << ", message \"" << table_cell(a.message)
-         << "\". With the monotone fallback (the default): converged " << yes_no(b.converged) << " after "
-         << b.levels.back().primal_steps << " fallback steps, energies";
-      for (double e : b.fallback_energies) md << " " << fmt("%.6g", e);
-      md << " (strictly falling), certificate " << fmt("%.1e", b.certificate.worst()) << ".\n\n";
-    }
-    // --- bad input ---
-    md << "### Bad input\n\nEvery line of `tests/bad_input.tsv`, run through `plate -q` (with `--json` to a scratch "
-          "file). Status 2 is bad input, 3 not converged (the outputs are written and say so), 4 another failure. "
-          "The same list is a test in `make test`.\n\n";
-    bad_input(md, plate, cases, scratch);
-    md << "**An interrupted run.** ";
-    interrupted(md, plate, scratch);
+    for (auto section : {small_eps, point_obstacle, flat_support, many_regions, just_touching_obstacle,
+                         million_unknowns, cycling_active_set, bad_inputs})
+      section(md, c);
     std::filesystem::create_directories(out);
     write_file_atomically(out + "/hard_cases.md", md.str());
   } catch (const std::exception& e) {
     std::cerr << "hard_cases: " << e.what() << "\n";
-    return 4;
+    return kFailure;
   }
-  return 0;
+  return kSuccess;
 }

@@ -13,17 +13,17 @@
 #include <sstream>
 
 #include "atomic_file.hpp"
+#include "exit_codes.hpp"
 #include "contraction.hpp"
 #include "dual_active_set.hpp"
 #include "fields.hpp"
 #include "format.hpp"
+#include "norms.hpp"
+#include "progress.hpp"
 #include "stopwatch.hpp"
 #include "summary.hpp"
 
 namespace {
-
-// Exit codes beyond CLI11's own (which it uses for options it cannot parse).
-constexpr int kBadInput = 2, kNotConverged = 3, kFailure = 4;
 
 const CLI::Validator kFinitePositive(
     [](std::string& s) {
@@ -64,7 +64,6 @@ std::pair<double, double> parse_pair(const std::string& option, const std::strin
     throw std::invalid_argument(option + " must be two finite numbers 'x,y', got '" + text + "'");
   return {x, y};
 }
-
 
 // Refuses grids with nothing to solve and grids that cannot fit (make_grid already refuses counts
 // beyond an int): the memory estimate is the exact solver's measured peak per unknown (results/speed_vs_error.md:
@@ -107,11 +106,259 @@ double answer_scale(const plate::Problem& p) {
   return s > 0 ? s : p.grid.lx();  // no obstacle and no load: w = 0; any length will do
 }
 
+
+// Every option, as given or by default; the handles of those whose presence changes the run.
+struct Options {
+  int n = 4;
+  double lx = 1.0, ly = 1.0;
+  std::string obstacle = "cylinder", load = "0", scheme = "exact", sampling = "edge", edge = "auto";
+  double R = 0.0625, radius = 0.25, nu = 0.3;  // the paper's cylinder (a test holds these to reference/)
+  std::string centre = "0.5,0.5";
+  plate::SolveOptions opt;
+  double eps_fixed = 0;
+  std::vector<std::string> points;
+  std::string csv_path, json_path, line_csv_path;
+  bool rate = false, quiet = false, no_globalise = false, no_nested = false;
+  CLI::Option *eps_opt = nullptr, *eps_start_opt = nullptr, *eps_min_opt = nullptr, *tol_opt = nullptr,
+              *max_iter_opt = nullptr;
+};
+
+void add_options(CLI::App& app, Options& o) {
+  app.get_formatter()->column_width(34);
+  app.add_option("-n,--cells", o.n, "cells along x; the mesh size is h = lx / n")
+      ->check(kCellCount)
+      ->capture_default_str();
+  app.add_option("--lx", o.lx, "width of the rectangle")->check(kFinitePositive)->capture_default_str();
+  app.add_option("--ly", o.ly, "height of the rectangle (a whole number of cells)")
+      ->check(kFinitePositive)
+      ->capture_default_str();
+  app.add_option("--obstacle", o.obstacle,
+                 "'cylinder' (height R on the disk of --radius around --centre, no constraint outside) "
+                 "or an expression in x, y (muparser; 'inf' is infinity: -inf means no constraint)")
+      ->capture_default_str();
+  app.add_option("-R,--obstacle-height", o.R, "height R of the cylinder")->check(kFinite)->capture_default_str();
+  app.add_option("--radius", o.radius, "radius of the cylinder")->check(kFinitePositive)->capture_default_str();
+  app.add_option("--centre", o.centre, "centre of the cylinder, 'x,y'")->capture_default_str();
+  app.add_option("--load", o.load, "load f(x, y): a number or an expression in x, y")->capture_default_str();
+  app.add_option("--scheme", o.scheme,
+                     "exact: no penalty, the constraint held exactly (primal-dual active sets for nodes, a dual "
+                     "active-set method for any other sampling), certified; nonlinear: penalty scheme (3a), "
+                     "refactorised when the contact set changes; linear: penalty scheme (5a), one factorisation per "
+                     "eps, slow at small eps (its answers often fail the error bound)")
+          ->check(CLI::IsMember({"linear", "nonlinear", "exact"}))
+          ->capture_default_str();
+  app.add_option("--sampling", o.sampling,
+                 "where w >= phi is imposed: edge (points on the obstacle's edge, weighted by arc length, and the "
+                 "grid nodes), edge-gauss (edge points and Gauss points), gauss (4x4 Gauss points per element, (8) "
+                 "as printed), nodes (grid nodes, weight h^2)")
+      ->check(CLI::IsMember({"edge", "edge-gauss", "gauss", "nodes"}))
+      ->capture_default_str();
+  app.add_option("--edge", o.edge,
+                 "the obstacle's edge for edge sampling: auto (the cylinder's rim; none for an expression), none "
+                 "(interior samples alone), circle:cx,cy,r, or polygon:x1,y1;x2,y2;... (about one point per h)")
+      ->capture_default_str();
+  o.eps_opt = app.add_option("--eps", o.eps_fixed, "solve at this eps only (no continuation); every eps is in units of lx^4, so it means the same in any unit of length")->check(kFinitePositive);
+  o.eps_start_opt = app.add_option("--eps-start", o.opt.eps_start, "first eps of the continuation")
+      ->check(kFinitePositive)
+      ->capture_default_str()
+      ->excludes(o.eps_opt);
+  o.eps_min_opt = app.add_option("--eps-min", o.opt.eps_min, "smallest eps tried before the continuation is declared failed")
+      ->check(kFinitePositive)
+      ->capture_default_str()
+      ->excludes(o.eps_opt);
+  o.tol_opt = app.add_option("--tol", o.opt.tol,
+                 "OS, relative to the size of the answer (max |phi| at the samples, or the free plate's max |w| if larger): "
+                 "stop when steps, and successive eps levels, are within tol times that size (max over nodes); "
+                 "with --scheme exact the bound on every relative certificate entry (default there 1e-10)")
+      ->check(kFinitePositive)
+      ->capture_default_str();
+  o.max_iter_opt = app.add_option("--max-iter", o.opt.max_iter, "iteration cap per eps level; reaching it is a failure")
+      ->check(kIterationCap)
+      ->capture_default_str();
+  app.add_option("--nu", o.nu, "Poisson's ratio for the bending moments")
+      ->check(kFinite & CLI::Range(-1.0, 0.5))
+      ->capture_default_str();
+  app.add_option("--point", o.points, "report w at 'x,y' (repeatable)");
+  app.add_option("--csv", o.csv_path, "write the nodal fields (CSV) here");
+  app.add_option("--json", o.json_path, "write the summary (JSON) here");
+  app.add_option("--line-csv", o.line_csv_path, "write the line load q(theta) at the edge points (CSV) here");
+  app.add_flag("--no-globalise", o.no_globalise,
+               "exact scheme: end with an error if the active set repeats, instead of the monotone fallback");
+  app.add_flag("--no-nested", o.no_nested, "exact scheme: start from an empty active set, not from the coarser grid");
+  app.add_flag("--rate", o.rate, "also compute lambda_1h and the linear scheme's contraction factors");
+  app.add_flag("-q,--quiet", o.quiet, "print nothing but errors");
+}
+
+// What to solve and how, once every option has been checked.
+struct Run {
+  plate::Grid g;
+  plate::Field phi, f;
+  plate::SamplingSpec spec;
+  bool exact = false;
+  plate::SolveOptions opt;
+  plate::ExactOptions exact_opt;
+  plate::Report report;
+};
+
+// Throws std::invalid_argument naming the option at fault; nothing has been written yet.
+Run check(const Options& o) {
+  using namespace plate;
+  Run r;
+  r.g = make_grid(o.n, o.lx, o.ly);
+  check_grid_size(r.g);
+  check_outputs({o.json_path, o.csv_path, o.line_csv_path});
+  r.spec = SamplingSpec{sampling_kind(o.sampling), {}};
+  if (o.obstacle == "cylinder") {
+    const auto [cx, cy] = parse_pair("--centre", o.centre);
+    r.phi = cylinder(cx, cy, o.radius, o.R);
+    if (o.edge == "auto") r.spec.edge = circle_edge(cx, cy, o.radius);
+  } else {
+    r.phi = expression("--obstacle", o.obstacle);
+  }
+  if (o.edge != "auto") r.spec.edge = parse_edge(o.edge);
+  if (!o.line_csv_path.empty() && !has_edge(r.spec.kind))
+    throw std::invalid_argument("--line-csv needs edge sampling (--sampling edge or edge-gauss)");
+  r.f = expression("--load", o.load);
+  r.exact = o.scheme == "exact";
+  r.opt = o.opt;
+  r.opt.scheme = o.scheme == "linear" ? Scheme::Linear : Scheme::Nonlinear;
+  if (r.exact) {
+    for (const auto* opt : {o.eps_opt, o.eps_start_opt, o.eps_min_opt})
+      if (opt->count()) throw std::invalid_argument(opt->get_name() + " has no meaning for --scheme exact (there is no eps)");
+    if (o.rate) throw std::invalid_argument("--rate describes the linear scheme's contraction: it needs a penalty scheme");
+  } else if (o.no_globalise || o.no_nested) {
+    throw std::invalid_argument("--no-globalise and --no-nested apply to --scheme exact only");
+  }
+  r.exact_opt.tol = o.tol_opt->count() ? o.opt.tol : r.exact_opt.tol;
+  r.exact_opt.max_iter = o.max_iter_opt->count() ? o.opt.max_iter : r.exact_opt.max_iter;
+  r.exact_opt.globalise = !o.no_globalise;
+  r.exact_opt.nested = !o.no_nested;
+  if (r.exact) validate(r.exact_opt);
+  if (*o.eps_opt) {
+    r.opt.eps_start = o.eps_fixed;
+    r.opt.continuation = false;
+  }
+  validate(r.opt);
+  for (const auto& p : o.points) r.report.points.push_back(parse_pair("--point", p));
+  for (const auto& [x, y] : r.report.points)
+    if (x < 0 || x > r.g.lx() || y < 0 || y > r.g.ly())
+      throw std::invalid_argument("--point " + std::to_string(x) + "," + std::to_string(y) + " is outside the plate");
+  return r;
+}
+
+// The effective value of every option, given or default, so a run can be reproduced from its output.
+void echo(const CLI::App& app, const Options& o, Run& r) {
+  for (const auto* opt : app.get_options()) {
+    if (opt->get_name() == "--help") continue;
+    std::string value = opt->count() ? CLI::detail::join(opt->reduced_results(), " ") : opt->get_default_str();
+    if (value.empty()) value = "(none)";
+    if (opt->get_expected_max() == 0) value = opt->count() ? "true" : "false";  // a flag
+    if (r.exact && opt == o.tol_opt) value = plate::fmt("%g", r.exact_opt.tol);
+    if (r.exact && opt == o.max_iter_opt) value = std::to_string(r.exact_opt.max_iter);
+    r.report.config.emplace_back(opt->get_name(), value);
+  }
+  if (o.quiet) return;
+  std::cout << "plate: " << r.g.nx << " x " << r.g.ny << " cells, h = " << r.g.h << ", " << r.g.unknowns() << " unknowns\n";
+  for (const auto& [k, v] : r.report.config) std::cout << "  " << k << " = " << v << "\n";
+}
+
+// The exact solver's answer in the penalty schemes' form, for one report.
+plate::SolveResult solve_exactly(Run& r, const plate::Problem& problem, plate::ExactResult& exact, plate::VectorXd& xi,
+                                 plate::Progress& progress) {
+  using namespace plate;
+  r.exact_opt.on_iterate = [&](int cells, int iteration, int held, int changed) {
+    const std::string grid = "grid " + std::to_string(cells) + " cells: ";
+    if (iteration == 0)
+      progress.stage(grid + "starting with " + std::to_string(held) + " candidate rows");
+    else
+      progress.stage(grid + "active-set iteration " + std::to_string(iteration) + ", " + std::to_string(held) +
+                     " rows held, " + std::to_string(changed) + " to change");
+  };
+  exact = solve_exact(problem, r.phi, r.f, r.exact_opt);
+  SolveResult result;
+  result.w = exact.w;
+  result.converged = exact.converged;
+  result.message = exact.message;
+  for (const auto& l : exact.levels) result.seconds_iterate += l.seconds;
+  xi = exact.lambda;
+  r.report.certificate = &exact.certificate;
+  r.report.certificate_tol = r.exact_opt.tol;
+  return result;
+}
+
+// Scheme (3a) or (5a) with eps continuation; not converged if the plate sinks deeper into the
+// obstacle than tol, whatever the steps say.
+plate::SolveResult solve_penalty(Run& r, const plate::Problem& problem, double L4, plate::VectorXd& xi,
+                                 plate::Progress& progress) {
+  using namespace plate;
+  VectorXd last;
+  r.opt.on_iterate = [&](double eps, int iteration, const VectorXd& w) {
+    const double step = last.size() ? max_nodal_abs(w - last) : max_nodal_abs(w);
+    last = w;
+    progress.step("eps = " + fmt("%g", eps / L4) + ": iteration " + std::to_string(iteration) + ", step " + fmt("%.2e", step));
+  };
+  SolveResult result = solve(problem, r.opt);
+  xi = contact_force_density(problem, result.w, result.eps);
+  const double below = (problem.phi - problem.sampling.S * result.w).cwiseMax(0.0).maxCoeff();
+  if (result.converged && below > r.opt.tol) {  // the penalty lets the plate into the obstacle by about eps xi
+    result.converged = false;
+    result.message = fmt("the plate lies %.3g below the obstacle at a sample point", below) +
+                     fmt(", more than tol = %.3g (the penalty's own error at eps = ", r.opt.tol) +
+                     fmt("%g); use a smaller --eps-min or --scheme exact", result.eps / L4);
+  }
+  r.report.config.emplace_back("tol (absolute: --tol times the answer's size)", fmt("%.6g", r.opt.tol));
+  r.report.config.emplace_back("eps unit (lx^4)", fmt("%.6g", L4));
+  return result;
+}
+
+// Assemble, solve, write every output, print the summary; the exit status.
+int solve_and_write(const Options& o, Run& r, plate::Clock::time_point t0) {
+  using namespace plate;
+  Progress progress("plate", o.quiet);
+  progress.stage("assembling " + std::to_string(r.g.unknowns()) + " unknowns");
+  const Problem problem = make_problem(r.g, r.spec, r.phi, r.f);
+  r.report.seconds_assemble = seconds_since(t0);
+  progress.stage("assembled; solving (" + o.scheme + " scheme, " + o.sampling + " sampling)");
+  // Scale-free penalty: eps in units of L^4 (the stiffness K ~ L^-2 against eps^-1 M ~ L^2 / eps),
+  // OS relative to the size of the answer. On the unit square eps is unchanged.
+  const double L4 = std::pow(r.g.lx(), 4), scale = r.exact ? 1.0 : answer_scale(problem);
+  r.opt.eps_start *= L4;
+  r.opt.eps_min *= L4;
+  r.opt.eps_unit = L4;
+  r.report.eps_unit = L4;
+  r.opt.tol *= scale;
+  ExactResult exact_result;
+  VectorXd xi;
+  SolveResult result = r.exact ? solve_exactly(r, problem, exact_result, xi, progress)
+                               : solve_penalty(r, problem, L4, xi, progress);
+  progress.stage(result.converged ? "solved; writing the outputs" : "not converged; writing the outputs");
+  const NodalFields nodes = nodal_fields(problem, result.w, r.phi, xi, o.nu);
+  r.report.xi = xi;
+  r.report.line = line_force(problem, xi);
+  if (o.rate) r.report.lambda1h = smallest_eigenpair(problem.K, problem.M).lambda;
+  r.report.problem = &problem;
+  r.report.result = &result;
+  r.report.nodes = &nodes;
+  r.report.seconds_total = seconds_since(t0);
+
+  // A run that is not an answer says so in every output, so a file read later cannot be mistaken for one.
+  const std::string warning = result.converged ? "" : "# NOT CONVERGED: " + result.message + "\n";
+  if (!o.csv_path.empty()) write_file_atomically(o.csv_path, warning + nodal_csv(nodes));
+  if (!o.json_path.empty()) write_file_atomically(o.json_path, summary_json(r.report));
+  if (!o.line_csv_path.empty()) write_file_atomically(o.line_csv_path, warning + line_force_csv(problem, r.report.line));
+  if (!o.quiet) std::cout << summary_text(r.report);
+  if (!result.converged) {
+    std::cerr << "plate: error: " << result.message << "\n";
+    return kNotConverged;
+  }
+  return kSuccess;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  plate::clean_up_on_interrupt("plate");
   using namespace plate;
+  clean_up_on_interrupt("plate");
   CLI::App app{
       "plate: a clamped elastic plate over a rigid obstacle (V. A. Kovtunenko, 1994).\n"
       "Finds w with Lap^2 w = f + xi, w >= phi, xi >= 0, xi (w - phi) = 0 on [0,lx] x [0,ly],\n"
@@ -126,208 +373,15 @@ int main(int argc, char** argv) {
       "= f, is solved by the nonlinear scheme (3a) or the linear scheme (5a) with eps_s = eps-start * 10^-s\n"
       "until successive eps levels agree within tol, from w = 0 (--sampling gauss reproduces the paper).\n"
       "Exit status: 0 converged, 2 bad input, 3 not converged (outputs are still written), 4 other failure."};
-  app.get_formatter()->column_width(34);
-
-  int n = 4;
-  double lx = 1.0, ly = 1.0;
-  std::string obstacle = "cylinder", load = "0", scheme = "exact", sampling = "edge", edge = "auto";
-  double R = 0.0625, radius = 0.25, nu = 0.3;
-  std::string centre = "0.5,0.5";
-  SolveOptions opt;
-  double eps_fixed = 0;
-  std::vector<std::string> points;
-  std::string csv_path, json_path, line_csv_path;
-  bool rate = false, quiet = false;
-
-  app.add_option("-n,--cells", n, "cells along x; the mesh size is h = lx / n")
-      ->check(kCellCount)
-      ->capture_default_str();
-  app.add_option("--lx", lx, "width of the rectangle")->check(kFinitePositive)->capture_default_str();
-  app.add_option("--ly", ly, "height of the rectangle (a whole number of cells)")
-      ->check(kFinitePositive)
-      ->capture_default_str();
-  app.add_option("--obstacle", obstacle,
-                 "'cylinder' (height R on the disk of --radius around --centre, no constraint outside) "
-                 "or an expression in x, y (muparser; 'inf' is infinity: -inf means no constraint)")
-      ->capture_default_str();
-  app.add_option("-R,--obstacle-height", R, "height R of the cylinder")->check(kFinite)->capture_default_str();
-  app.add_option("--radius", radius, "radius of the cylinder")->check(kFinitePositive)->capture_default_str();
-  app.add_option("--centre", centre, "centre of the cylinder, 'x,y'")->capture_default_str();
-  app.add_option("--load", load, "load f(x, y): a number or an expression in x, y")->capture_default_str();
-  app.add_option("--scheme", scheme,
-                     "exact: no penalty, the constraint held exactly (primal-dual active sets for nodes, a dual "
-                     "active-set method for any other sampling), certified; nonlinear: penalty scheme (3a), "
-                     "refactorised when the contact set changes; linear: penalty scheme (5a), one factorisation per "
-                     "eps, slow at small eps (its answers often fail the error bound)")
-          ->check(CLI::IsMember({"linear", "nonlinear", "exact"}))
-          ->capture_default_str();
-  app.add_option("--sampling", sampling,
-                 "where w >= phi is imposed: edge (points on the obstacle's edge, weighted by arc length, and the "
-                 "grid nodes), edge-gauss (edge points and Gauss points), gauss (4x4 Gauss points per element, (8) "
-                 "as printed), nodes (grid nodes, weight h^2)")
-      ->check(CLI::IsMember({"edge", "edge-gauss", "gauss", "nodes"}))
-      ->capture_default_str();
-  app.add_option("--edge", edge,
-                 "the obstacle's edge for edge sampling: auto (the cylinder's rim; none for an expression), none "
-                 "(interior samples alone), circle:cx,cy,r, or polygon:x1,y1;x2,y2;... (about one point per h)")
-      ->capture_default_str();
-  auto* eps_opt = app.add_option("--eps", eps_fixed, "solve at this eps only (no continuation); every eps is in units of lx^4, so it means the same in any unit of length")->check(kFinitePositive);
-  auto* eps_start_opt = app.add_option("--eps-start", opt.eps_start, "first eps of the continuation")
-      ->check(kFinitePositive)
-      ->capture_default_str()
-      ->excludes(eps_opt);
-  auto* eps_min_opt = app.add_option("--eps-min", opt.eps_min, "smallest eps tried before the continuation is declared failed")
-      ->check(kFinitePositive)
-      ->capture_default_str()
-      ->excludes(eps_opt);
-  auto* tol_opt = app.add_option("--tol", opt.tol,
-                 "OS, relative to the size of the answer (max |phi| at the samples, or the free plate's max |w| if larger): "
-                 "stop when steps, and successive eps levels, are within tol times that size (max over nodes); "
-                 "with --scheme exact the bound on every relative certificate entry (default there 1e-10)")
-      ->check(kFinitePositive)
-      ->capture_default_str();
-  app.add_option("--max-iter", opt.max_iter, "iteration cap per eps level; reaching it is a failure")
-      ->check(kIterationCap)
-      ->capture_default_str();
-  app.add_option("--nu", nu, "Poisson's ratio for the bending moments")
-      ->check(kFinite & CLI::Range(-1.0, 0.5))
-      ->capture_default_str();
-  app.add_option("--point", points, "report w at 'x,y' (repeatable)");
-  app.add_option("--csv", csv_path, "write the nodal fields (CSV) here");
-  app.add_option("--json", json_path, "write the summary (JSON) here");
-  app.add_option("--line-csv", line_csv_path, "write the line load q(theta) at the edge points (CSV) here");
-  bool no_globalise = false, no_nested = false;
-  app.add_flag("--no-globalise", no_globalise,
-               "exact scheme: end with an error if the active set repeats, instead of the monotone fallback");
-  app.add_flag("--no-nested", no_nested, "exact scheme: start from an empty active set, not from the coarser grid");
-  app.add_flag("--rate", rate, "also compute lambda_1h and the linear scheme's contraction factors");
-  app.add_flag("-q,--quiet", quiet, "print nothing but errors");
+  Options o;
+  add_options(app, o);
+  // CLI11 has its own exit codes; every bad input exits with the one documented in --help.
+  if (const int status = parse_options(app, argc, argv, "plate"); status >= 0) return status;
+  const auto t0 = Clock::now();
   try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    // CLI11 has its own exit codes; every bad input exits with the one documented in --help.
-    std::cerr << "plate: bad input: " << e.what() << "\n";
-    return kBadInput;
-  }
-
-  const auto t0 = plate::Clock::now();
-  try {
-    const Grid g = make_grid(n, lx, ly);
-    check_grid_size(g);
-    check_outputs({json_path, csv_path, line_csv_path});
-    Field phi;
-    SamplingSpec spec{sampling_kind(sampling), {}};
-    if (obstacle == "cylinder") {
-      const auto [cx, cy] = parse_pair("--centre", centre);
-      phi = cylinder(cx, cy, radius, R);
-      if (edge == "auto") spec.edge = circle_edge(cx, cy, radius);
-    } else {
-      phi = expression("--obstacle", obstacle);
-    }
-    if (edge != "auto") spec.edge = parse_edge(edge);
-    if (!line_csv_path.empty() && !has_edge(spec.kind))
-      throw std::invalid_argument("--line-csv needs edge sampling (--sampling edge or edge-gauss)");
-    const Field f = expression("--load", load);
-    const bool exact = scheme == "exact";
-    opt.scheme = scheme == "linear" ? Scheme::Linear : Scheme::Nonlinear;
-    if (exact) {
-      for (const auto* o : {eps_opt, eps_start_opt, eps_min_opt})
-        if (o->count()) throw std::invalid_argument(o->get_name() + " has no meaning for --scheme exact (there is no eps)");
-      if (rate) throw std::invalid_argument("--rate describes the linear scheme's contraction: it needs a penalty scheme");
-    } else if (no_globalise || no_nested) {
-      throw std::invalid_argument("--no-globalise and --no-nested apply to --scheme exact only");
-    }
-    ExactOptions exact_opt;
-    exact_opt.tol = tol_opt->count() ? opt.tol : exact_opt.tol;
-    exact_opt.max_iter = app.get_option("--max-iter")->count() ? opt.max_iter : exact_opt.max_iter;
-    exact_opt.globalise = !no_globalise;
-    exact_opt.nested = !no_nested;
-    if (exact) validate(exact_opt);
-    if (*eps_opt) {
-      opt.eps_start = eps_fixed;
-      opt.continuation = false;
-    }
-    validate(opt);
-    Report report;
-    for (const auto& p : points) report.points.push_back(parse_pair("--point", p));
-    for (const auto& [x, y] : report.points)
-      if (x < 0 || x > g.lx() || y < 0 || y > g.ly())
-        throw std::invalid_argument("--point " + std::to_string(x) + "," + std::to_string(y) +
-                                    " is outside the plate");
-    // Echo the effective value of every option, given or default, so a run can be reproduced from its output.
-    for (const auto* o : app.get_options()) {
-      if (o->get_name() == "--help") continue;
-      std::string value = o->count() ? CLI::detail::join(o->reduced_results(), " ") : o->get_default_str();
-      if (value.empty()) value = "(none)";
-      if (o->get_expected_max() == 0) value = o->count() ? "true" : "false";  // a flag
-      if (exact && o == tol_opt) value = plate::fmt("%g", exact_opt.tol);
-      if (exact && o->get_name() == "--max-iter") value = std::to_string(exact_opt.max_iter);
-      report.config.emplace_back(o->get_name(), value);
-    }
-
-    if (!quiet) {
-      std::cout << "plate: " << g.nx << " x " << g.ny << " cells, h = " << g.h << ", " << g.unknowns()
-                << " unknowns\n";
-      for (const auto& [k, v] : report.config) std::cout << "  " << k << " = " << v << "\n";
-    }
-    const Problem problem = make_problem(g, spec, phi, f);
-    report.seconds_assemble = seconds_since(t0);
-    // Scale-free penalty: eps in units of L^4 (the stiffness K ~ L^-2 against eps^-1 M ~ L^2 / eps),
-    // OS relative to the size of the answer. On the unit square eps is unchanged.
-    const double L4 = std::pow(g.lx(), 4), scale = exact ? 1.0 : answer_scale(problem);
-    opt.eps_start *= L4;
-    opt.eps_min *= L4;
-    opt.eps_unit = L4;
-    report.eps_unit = L4;
-    opt.tol *= scale;
-
-    SolveResult result;
-    ExactResult exact_result;
-    VectorXd xi;
-    if (exact) {
-      exact_result = solve_exact(problem, phi, f, exact_opt);
-      result.w = exact_result.w;
-      result.converged = exact_result.converged;
-      result.message = exact_result.message;
-      for (const auto& l : exact_result.levels) result.seconds_iterate += l.seconds;
-      xi = exact_result.lambda;
-      report.certificate = &exact_result.certificate;
-      report.certificate_tol = exact_opt.tol;
-    } else {
-      result = solve(problem, opt);
-      xi = contact_force_density(problem, result.w, result.eps);
-      const double below = (problem.phi - problem.sampling.S * result.w).cwiseMax(0.0).maxCoeff();
-      if (result.converged && below > opt.tol) {  // the penalty lets the plate into the obstacle by about eps xi
-        result.converged = false;
-        result.message = plate::fmt("the plate lies %.3g below the obstacle at a sample point", below) +
-                         plate::fmt(", more than tol = %.3g (the penalty's own error at eps = ", opt.tol) +
-                         plate::fmt("%g); use a smaller --eps-min or --scheme exact", result.eps / L4);
-      }
-      report.config.emplace_back("tol (absolute: --tol times the answer's size)", plate::fmt("%.6g", opt.tol));
-      report.config.emplace_back("eps unit (lx^4)", plate::fmt("%.6g", L4));
-    }
-    const NodalFields nodes = nodal_fields(problem, result.w, phi, xi, nu);
-    report.xi = xi;
-    report.line = line_force(problem, xi);
-    if (rate) report.lambda1h = smallest_eigenpair(problem.K, problem.M).lambda;
-    report.problem = &problem;
-    report.result = &result;
-    report.nodes = &nodes;
-    report.seconds_total = seconds_since(t0);
-
-    // A run that is not an answer says so in every output, so a file read later cannot be mistaken for one.
-    const std::string warning = result.converged ? "" : "# NOT CONVERGED: " + result.message + "\n";
-    if (!csv_path.empty()) write_file_atomically(csv_path, warning + nodal_csv(nodes));
-    if (!json_path.empty()) write_file_atomically(json_path, summary_json(report));
-    if (!line_csv_path.empty()) write_file_atomically(line_csv_path, warning + line_force_csv(problem, report.line));
-    if (!quiet) std::cout << summary_text(report);
-    if (!result.converged) {
-      std::cerr << "plate: error: " << result.message << "\n";
-      return kNotConverged;
-    }
-    return 0;
+    Run r = check(o);
+    echo(app, o, r);
+    return solve_and_write(o, r, t0);
   } catch (const std::invalid_argument& e) {
     std::cerr << "plate: bad input: " << e.what() << "\n";
     return kBadInput;

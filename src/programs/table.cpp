@@ -10,10 +10,12 @@
 #include <sstream>
 
 #include "atomic_file.hpp"
+#include "exit_codes.hpp"
 #include "format.hpp"
 #include "contact.hpp"
 #include "contraction.hpp"
 #include "eps_limit.hpp"
+#include "norms.hpp"
 #include "published.hpp"
 #include "schemes.hpp"
 
@@ -153,13 +155,15 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.footer(kExitStatusHelp);
+  if (const int status = parse_options(app, argc, argv, "table"); status >= 0) return status;
 
   try {
     const auto table = read_paper_table(reference + "/paper_table.csv");
     const auto numbers = read_paper_numbers(reference + "/paper_numbers.csv");
-    const int n_paper = paper_cells(numbers);
-    const Field phi = paper_obstacle(numbers);
+    const PaperScene scene = paper_scene(numbers);
+    const int n_paper = scene.cells;
+    const Field phi = scene.obstacle();
     const double load = published(numbers, "load");
     std::vector<int> grids = {n_paper};
     grids.insert(grids.end(), fine.begin(), fine.end());
@@ -183,7 +187,7 @@ int main(int argc, char** argv) {
     write_file_atomically(out + "/table_fine.csv", csv(fine_cases, table));
   } catch (const std::exception& e) {
     std::cerr << "table: " << e.what() << "\n";
-    return 4;
+    return kFailure;
   }
-  return 0;
+  return kSuccess;
 }

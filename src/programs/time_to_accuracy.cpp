@@ -13,7 +13,10 @@
 #include <iostream>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "atomic_file.hpp"
+#include "exit_codes.hpp"
 #include "format.hpp"
 #include "stopwatch.hpp"
 
@@ -31,12 +34,6 @@ struct Run {
   int n = 0, status = -1;
   double seconds = 0, peak_mib = 0, max_w = NAN, force = NAN, err_w = NAN, err_f = NAN;
 };
-
-// A number after "key": in the JSON plate writes (one level deep, no nesting needed here).
-double json_number(const std::string& json, const std::string& key) {
-  const auto at = json.find("\"" + key + "\": ");
-  return at == std::string::npos ? NAN : std::strtod(json.c_str() + at + key.size() + 4, nullptr);
-}
 
 // The whole process, as a user runs it: wall time from fork to exit, and its peak memory.
 Run run_plate(const std::string& plate, const Config& c, int n, const std::string& json) {
@@ -65,10 +62,12 @@ Run run_plate(const std::string& plate, const Config& c, int n, const std::strin
   r.peak_mib = ru.ru_maxrss / 1024.0;
   r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   std::ifstream f(json);
-  std::stringstream s;
-  s << f.rdbuf();
-  r.max_w = json_number(s.str(), "max_w");
-  r.force = json_number(s.str(), "total_contact_force");
+  const nlohmann::json j = nlohmann::json::parse(f, nullptr, false);  // none or malformed: the run failed
+  auto number = [&](const char* key) {
+    return !j.is_discarded() && j.contains(key) && j[key].is_number() ? j[key].get<double>() : NAN;
+  };
+  r.max_w = number("max_w");
+  r.force = number("total_contact_force");
   return r;
 }
 
@@ -160,7 +159,8 @@ int main(int argc, char** argv) {
   app.add_option("--limits", limits, "continuum limits")->capture_default_str();
   app.add_option("--out", out, "folder for the results")->capture_default_str();
   app.add_option("--max-n", max_n, "finest grid of any run")->check(CLI::Range(8, 2048))->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.footer(kExitStatusHelp);
+  if (const int status = parse_options(app, argc, argv, "time_to_accuracy"); status >= 0) return status;
   try {
     const auto lim = read_limits(limits);
     const std::vector<Config> configs = {
@@ -186,9 +186,9 @@ int main(int argc, char** argv) {
     std::filesystem::remove(json);
     write_file_atomically(out + "/time_to_accuracy.csv", csv(runs));
     write_file_atomically(out + "/time_to_accuracy.md", report(runs, configs, lim));
-    return 0;
+    return kSuccess;
   } catch (const std::exception& e) {
     std::cerr << "time_to_accuracy: error: " << e.what() << "\n";
-    return 4;
+    return kFailure;
   }
 }

@@ -75,17 +75,30 @@ double published(const std::map<std::string, double>& numbers, const std::string
   return it->second;
 }
 
-Field paper_obstacle(const std::map<std::string, double>& numbers, double height) {
-  return cylinder(published(numbers, "obstacle_cx"), published(numbers, "obstacle_cy"),
-                  published(numbers, "obstacle_radius"), height);
+Field PaperScene::obstacle(double R) const { return cylinder(cx, cy, radius, R); }
+
+EdgeCurve PaperScene::rim() const { return circle_edge(cx, cy, radius); }
+
+PaperScene paper_scene(const std::map<std::string, double>& numbers) {
+  PaperScene s;
+  s.cx = published(numbers, "obstacle_cx");
+  s.cy = published(numbers, "obstacle_cy");
+  s.radius = published(numbers, "obstacle_radius");
+  s.height = published(numbers, "obstacle_height");
+  s.cells = static_cast<int>(std::lround(1.0 / published(numbers, "h")));
+  return s;
 }
 
-Field paper_obstacle(const std::map<std::string, double>& numbers) {
-  return paper_obstacle(numbers, published(numbers, "obstacle_height"));
+PaperScene read_paper_scene(const std::string& reference_dir) {
+  return paper_scene(read_paper_numbers(reference_dir + "/paper_numbers.csv"));
 }
 
-int paper_cells(const std::map<std::string, double>& numbers) {
-  return static_cast<int>(std::lround(1.0 / published(numbers, "h")));
+double plate_constant(const std::string& reference_dir, const std::string& key) {
+  const std::string path = reference_dir + "/plate_constants.csv";
+  const auto numbers = read_paper_numbers(path);
+  const auto it = numbers.find(key);
+  if (it == numbers.end()) throw std::runtime_error(path + " has no key " + key);
+  return it->second;
 }
 
 }  // namespace plate

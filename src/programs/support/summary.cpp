@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "contraction.hpp"
 
 namespace plate {
@@ -22,22 +24,6 @@ std::string csv_num(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.10g", v);
   return b;
-}
-std::string quoted(const std::string& s) {
-  std::string o = "\"";
-  for (char ch : s) {
-    if (ch == '"' || ch == '\\') {
-      o += '\\';
-      o += ch;
-    } else if (static_cast<unsigned char>(ch) < 0x20) {
-      char b[8];
-      std::snprintf(b, sizeof b, "\\u%04x", ch);
-      o += b;
-    } else {
-      o += ch;
-    }
-  }
-  return o + "\"";
 }
 
 struct Extremes {
@@ -85,22 +71,62 @@ std::string line_force_csv(const Problem& p, const LineForce& f) {
 }
 
 namespace {
-std::string line_force_json(const Report& r) {
-  const LineForce& f = r.line;
-  if (f.empty()) return "  \"line_force\": null,\n";
-  std::ostringstream o;
-  o << "  \"line_force\": {\"points\": " << f.q.size() << ", \"length\": " << num(f.length) << ", \"total\": "
-    << num(f.total) << ", \"mean\": " << num(f.mean) << ", \"min\": " << num(f.min) << ", \"max\": " << num(f.max);
-  if (!f.theta.empty())
-    o << ", \"q_fit_theta_0\": " << num(line_force_fit(f, 0)) << ", \"q_fit_theta_pi_4\": " << num(line_force_fit(f, M_PI / 4))
-      << ", \"q_point_theta_0\": " << num(line_force_at(f, 0)) << ", \"q_point_theta_pi_4\": " << num(line_force_at(f, M_PI / 4));
-  for (const auto& [key, v] : {std::pair{"fourier_cos_4k_theta", &f.fourier}, {"theta", &f.theta}, {"q", &f.q}}) {
-    o << ",\n    \"" << key << "\": [";
-    for (size_t k = 0; k < v->size(); ++k) o << (k ? ", " : "") << num((*v)[k]);
-    o << "]";
+using Json = nlohmann::ordered_json;  // keys in the order written, as a reader expects them
+
+// 10 significant digits, as the CSV has them; JSON has no infinity or NaN, so those become null.
+Json number(double v) {
+  if (!std::isfinite(v)) return nullptr;
+  return std::stod(csv_num(v));
+}
+
+Json numbers(const std::vector<double>& v) {
+  Json a = Json::array();
+  for (double x : v) a.push_back(number(x));
+  return a;
+}
+
+Json line_force_json(const LineForce& f) {
+  if (f.empty()) return nullptr;
+  Json j = {{"points", f.q.size()}, {"length", number(f.length)}, {"total", number(f.total)},
+            {"mean", number(f.mean)}, {"min", number(f.min)}, {"max", number(f.max)}};
+  if (!f.theta.empty()) {
+    j["q_fit_theta_0"] = number(line_force_fit(f, 0));
+    j["q_fit_theta_pi_4"] = number(line_force_fit(f, M_PI / 4));
+    j["q_point_theta_0"] = number(line_force_at(f, 0));
+    j["q_point_theta_pi_4"] = number(line_force_at(f, M_PI / 4));
   }
-  o << "},\n";
-  return o.str();
+  j["fourier_cos_4k_theta"] = numbers(f.fourier);
+  j["theta"] = numbers(f.theta);
+  j["q"] = numbers(f.q);
+  return j;
+}
+
+Json levels_json(const SolveResult& s, double eps_unit) {
+  Json a = Json::array();
+  for (const LevelRecord& l : s.levels)
+    a.push_back({{"eps", number(l.eps / eps_unit)}, {"iterations", l.iterations}, {"factorizations", l.factorizations},
+                 {"last_step", number(l.last_step)}, {"level_change", l.level_change < 0 ? Json(nullptr) : number(l.level_change)},
+                 {"converged", l.converged}});
+  return a;
+}
+
+// The exact solver's certificate, or the penalty run's residual and error bound.
+void check_json(Json& j, const Report& r) {
+  const Problem& p = *r.problem;
+  const SolveResult& s = *r.result;
+  if (r.certificate) {
+    const Certificate& c = *r.certificate;
+    j["certificate"] = {{"violation", number(c.violation)}, {"negative_multiplier", number(c.negative_multiplier)},
+                        {"complementarity", number(c.complementarity)}, {"stationarity", number(c.stationarity)},
+                        {"tol", number(r.certificate_tol)}};
+    j["penalty_residual"] = nullptr;
+    j["residual_ok"] = c.worst() <= r.certificate_tol;
+  } else {
+    j["penalty_residual"] = number(penalty_residual(p, s.w, s.eps));
+    j["error_bound"] = {{"bound", number(s.bound.bound)}, {"roundoff", number(s.bound.roundoff)},
+                        {"green_centre", number(s.bound.green)}};
+    j["residual_ok"] = s.converged;
+  }
 }
 }  // namespace
 
@@ -110,66 +136,38 @@ std::string summary_json(const Report& r) {
   const NodalFields& f = *r.nodes;
   const Extremes e = extremes(f);
   const VectorXd& xi = r.xi;
-  const double violation = (p.phi - p.sampling.S * s.w).cwiseMax(0.0).maxCoeff();
-  std::ostringstream o;
-  o << "{\n  \"config\": {";
-  for (size_t i = 0; i < r.config.size(); ++i)
-    o << (i ? ", " : "") << quoted(r.config[i].first) << ": " << quoted(r.config[i].second);
-  o << "},\n  \"grid\": {\"nx\": " << p.grid.nx << ", \"ny\": " << p.grid.ny << ", \"h\": " << num(p.grid.h)
-    << ", \"unknowns\": " << p.grid.unknowns() << ", \"sample_points\": " << p.sampling.size() << "},\n";
-  o << "  \"converged\": " << (s.converged ? "true" : "false") << ",\n";
-  o << "  \"message\": " << quoted(s.message) << ",\n";
-  o << "  \"eps_final\": " << num(s.eps / r.eps_unit) << ",\n  \"total_iterations\": " << s.total_iterations() << ",\n";
-  o << "  \"levels\": [";
-  for (size_t i = 0; i < s.levels.size(); ++i) {
-    const LevelRecord& l = s.levels[i];
-    o << (i ? ",\n    " : "\n    ") << "{\"eps\": " << num(l.eps / r.eps_unit) << ", \"iterations\": " << l.iterations
-      << ", \"factorizations\": " << l.factorizations << ", \"last_step\": " << num(l.last_step)
-      << ", \"level_change\": " << (l.level_change < 0 ? "null" : num(l.level_change))
-      << ", \"converged\": " << (l.converged ? "true" : "false") << "}";
-  }
-  o << "\n  ],\n";
-  o << "  \"max_w\": " << num(e.max_w) << ",\n  \"max_w_at\": [" << num(f.x[e.argmax_w]) << ", "
-    << num(f.y[e.argmax_w]) << "],\n  \"max_abs_w\": " << num(e.max_abs_w) << ",\n";
-  o << "  \"w_at_points\": [";
-  for (size_t i = 0; i < r.points.size(); ++i) {
-    const auto [x, y] = r.points[i];
-    const PointValues v = evaluate(p.grid, s.w, x, y);
-    o << (i ? ", " : "") << "{\"x\": " << num(x) << ", \"y\": " << num(y) << ", \"w\": " << num(v.w) << "}";
-  }
-  o << "],\n";
-  o << "  \"total_contact_force\": " << num(total_contact_force(p, xi)) << ",\n";
-  o << "  \"max_xi_samples\": " << num(xi.size() ? xi.maxCoeff() : 0.0) << ",\n";
-  o << "  \"max_xi_nodes\": " << num(e.max_xi) << ",\n";
-  o << "  \"max_abs_m12\": " << num(e.max_abs_m12) << ",\n";
-  o << line_force_json(r);
-  o << "  \"constraint_violation\": " << num(violation) << ",\n";
-  if (r.certificate) {
-    const Certificate& c = *r.certificate;
-    o << "  \"certificate\": {\"violation\": " << num(c.violation) << ", \"negative_multiplier\": "
-      << num(c.negative_multiplier) << ", \"complementarity\": " << num(c.complementarity)
-      << ", \"stationarity\": " << num(c.stationarity) << ", \"tol\": " << num(r.certificate_tol) << "},\n";
-    o << "  \"penalty_residual\": null,\n";
-    o << "  \"residual_ok\": " << (c.worst() <= r.certificate_tol ? "true" : "false") << ",\n";
-  } else {
-    o << "  \"penalty_residual\": " << num(penalty_residual(p, s.w, s.eps)) << ",\n";
-    o << "  \"error_bound\": {\"bound\": " << num(s.bound.bound) << ", \"roundoff\": " << num(s.bound.roundoff)
-      << ", \"green_centre\": " << num(s.bound.green) << "},\n";
-    o << "  \"residual_ok\": " << (s.converged ? "true" : "false") << ",\n";
-  }
-  o << "  \"contact_nodes\": [";
-  for (size_t i = 0; i < e.contact.size(); ++i)
-    o << (i ? ", " : "") << "[" << num(f.x[e.contact[i]]) << ", " << num(f.y[e.contact[i]]) << "]";
-  o << "],\n";
-  if (r.lambda1h > 0) {
-    o << "  \"contraction\": {\"lambda1h\": " << num(r.lambda1h)
-      << ", \"sharp_factor\": " << num(sharp_contraction(r.lambda1h, s.eps))
-      << ", \"paper_rho\": " << num(paper_rho(1.0 / r.lambda1h, s.eps)) << ", \"at_eps\": " << num(s.eps / r.eps_unit) << "},\n";
-  }
-  o << "  \"seconds\": {\"assemble\": " << num(r.seconds_assemble) << ", \"factorize\": "
-    << num(s.seconds_factorize) << ", \"iterate\": " << num(s.seconds_iterate) << ", \"bound\": " << num(s.seconds_bound) << ", \"total\": "
-    << num(r.seconds_total) << "}\n}\n";
-  return o.str();
+  Json j;
+  j["config"] = Json::object();
+  for (const auto& [k, v] : r.config) j["config"][k] = v;
+  j["grid"] = {{"nx", p.grid.nx}, {"ny", p.grid.ny}, {"h", number(p.grid.h)}, {"unknowns", p.grid.unknowns()},
+               {"sample_points", p.sampling.size()}};
+  j["converged"] = s.converged;
+  j["message"] = s.message;
+  j["eps_final"] = number(s.eps / r.eps_unit);
+  j["total_iterations"] = s.total_iterations();
+  j["levels"] = levels_json(s, r.eps_unit);
+  j["max_w"] = number(e.max_w);
+  j["max_w_at"] = {number(f.x[e.argmax_w]), number(f.y[e.argmax_w])};
+  j["max_abs_w"] = number(e.max_abs_w);
+  j["w_at_points"] = Json::array();
+  for (const auto& [x, y] : r.points)
+    j["w_at_points"].push_back({{"x", number(x)}, {"y", number(y)}, {"w", number(evaluate(p.grid, s.w, x, y).w)}});
+  j["total_contact_force"] = number(total_contact_force(p, xi));
+  j["max_xi_samples"] = number(xi.size() ? xi.maxCoeff() : 0.0);
+  j["max_xi_nodes"] = number(e.max_xi);
+  j["max_abs_m12"] = number(e.max_abs_m12);
+  j["line_force"] = line_force_json(r.line);
+  j["constraint_violation"] = number((p.phi - p.sampling.S * s.w).cwiseMax(0.0).maxCoeff());
+  check_json(j, r);
+  j["contact_nodes"] = Json::array();
+  for (int k : e.contact) j["contact_nodes"].push_back({number(f.x[k]), number(f.y[k])});
+  if (r.lambda1h > 0)
+    j["contraction"] = {{"lambda1h", number(r.lambda1h)}, {"sharp_factor", number(sharp_contraction(r.lambda1h, s.eps))},
+                        {"paper_rho", number(paper_rho(1.0 / r.lambda1h, s.eps))}, {"at_eps", number(s.eps / r.eps_unit)}};
+  j["seconds"] = {{"assemble", number(r.seconds_assemble)}, {"factorize", number(s.seconds_factorize)},
+                  {"iterate", number(s.seconds_iterate)}, {"bound", number(s.seconds_bound)},
+                  {"total", number(r.seconds_total)}};
+  return j.dump(2) + "\n";
 }
 
 std::string summary_text(const Report& r) {

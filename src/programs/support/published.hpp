@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "assemble.hpp"
+#include "edge.hpp"
 
 namespace plate {
 
@@ -24,12 +25,21 @@ std::map<std::string, double> read_paper_numbers(const std::string& path);
 // One value of read_paper_numbers' map; throws std::runtime_error naming a missing key.
 double published(const std::map<std::string, double>& numbers, const std::string& key);
 
-// The paper's obstacle read from those numbers: `height` on its disk, no constraint outside it.
-Field paper_obstacle(const std::map<std::string, double>& numbers, double height);
-// The same with the published height.
-Field paper_obstacle(const std::map<std::string, double>& numbers);
+// The paper's experiment as reference/paper_numbers.csv states it: the one place where its obstacle
+// (height R on the closed disk (10), no constraint outside) and its grid are spelled.
+struct PaperScene {
+  double cx = 0, cy = 0, radius = 0, height = 0;
+  int cells = 0;  // n = 1/h squares per side
+  Field obstacle() const { return obstacle(height); }
+  Field obstacle(double R) const;  // the same disk at another height
+  EdgeCurve rim() const;           // the circle (10), where the plate touches
+};
+PaperScene paper_scene(const std::map<std::string, double>& numbers);
+// Reads reference_dir/paper_numbers.csv.
+PaperScene read_paper_scene(const std::string& reference_dir);
 
-// The paper's grid, n = 1/h cells per side.
-int paper_cells(const std::map<std::string, double>& numbers);
+// A published constant of the clamped plate (uniform_centre, point_centre, lambda1), from
+// reference_dir/plate_constants.csv. Throws std::runtime_error naming a missing file or key.
+double plate_constant(const std::string& reference_dir, const std::string& key);
 
 }  // namespace plate

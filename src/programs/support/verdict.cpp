@@ -1,0 +1,29 @@
+// The one-line verdict on an extrapolation, printed under the round-off rule of format.hpp.
+#include "verdict.hpp"
+
+#include <cmath>
+
+#include "format.hpp"
+
+namespace plate {
+
+std::string format_order(double p, double noise) {
+  if (!std::isfinite(p)) return "-";
+  const int decimals = noise > 0 ? static_cast<int>(std::floor(-std::log10(10 * noise))) : 2;
+  if (decimals < 0) return "~" + fmt("%.0f", p) + " (round-off)";
+  return fmt(("%." + std::to_string(std::min(decimals, 2)) + "f").c_str(), p);
+}
+
+std::string verdict(const Extrapolation& e) {
+  const std::string limit = fmt_above(e.limit, e.limit_noise, 10, 'g'), bar = fmt_above(e.bar, e.bar_noise, 2);
+  const size_t t = e.orders.size();
+  if (e.steady) return "order " + format_order(e.orders[t - 1], e.order_noise[t - 1]) + ", limit " + limit + " +- " + bar;
+  const std::string fallback = "; finest value " + limit + " +- " + bar + " (last increment)";
+  if (t < 2) return "too few grids" + fallback;
+  if (!std::isfinite(e.orders[t - 1]) || !std::isfinite(e.orders[t - 2]))
+    return "not steady: the last increments change sign or grow" + fallback;
+  return "not steady: the last two orders are " + format_order(e.orders[t - 2], e.order_noise[t - 2]) + " and " +
+         format_order(e.orders[t - 1], e.order_noise[t - 1]) + fallback;
+}
+
+}  // namespace plate
