@@ -59,14 +59,14 @@ hard-cases: results/hard_cases.md ## tiny eps, area and point contact, n = 512, 
 
 # It runs build/plate on every line of tests/bad_input.tsv, so it depends on both.
 results/hard_cases.md: $(BUILD)/hard_cases $(BUILD)/plate tests/bad_input.tsv reference/plate_constants.csv
-	$(call say,"results/hard_cases.md: tiny eps, point and area contact, n = 512, every bad input","8 min")
+	$(call say,"results/hard_cases.md: tiny eps; point and area contact; n = 512; every bad input","8 min")
 	$(BUILD)/hard_cases --out results --plate $(BUILD)/plate --cases tests/bad_input.tsv --scratch $(BUILD)/hard-cases-work
 
 continuum: $(CONTINUUM) ## the h -> 0 limit: exact solves n = 8 ... 512, three samplings, orders, Richardson (about 6 min)
 
 # The timings file is written by the same run; it is not byte-identical between runs.
 $(CONTINUUM_DATA) &: $(BUILD)/continuum $(PAPER_NUMBERS)
-	$(call say,"results/continuum*: exact solves n = 8 ... 512, three samplings","5 min")
+	$(call say,"results/continuum*: exact solves n = 8 ... 512 with three samplings","4 min")
 	$(BUILD)/continuum --out results
 
 results/continuum.svg results/continuum.png: results/continuum_error.csv
@@ -77,11 +77,11 @@ results: $(RESULTS) ## the paper's table, Fig. 1, Fig. 2 and the contraction che
 # Each driver writes its files whole (temporary file, then rename); gnuplot writes to a
 # temporary file that is renamed once it is complete.
 $(TABLES) &: $(BUILD)/table reference/paper_table.csv $(PAPER_NUMBERS)
-	$(call say,"results/table*: the paper's iteration table and the finer grids","10 s")
+	$(call say,"results/table*: the paper's iteration table and the finer grids","6 min")
 	$(BUILD)/table --out results
 
 results/contraction.md: $(BUILD)/contraction $(PAPER_NUMBERS)
-	$(call say,"results/contraction.md: the measured contraction factors","10 s")
+	$(call say,"results/contraction.md: the measured contraction factors","5 s")
 	$(BUILD)/contraction --out results
 
 $(FIG1_DATA) &: $(BUILD)/fig1 $(PAPER_NUMBERS)
@@ -103,7 +103,7 @@ bench: $(BENCH_ALL) ## speed against error up to n = 1024, time to accuracy agai
 
 # Timings differ on every run: these files are remade only when the programs change.
 $(BENCH) &: $(BUILD)/bench $(PAPER_NUMBERS)
-	$(call say,"results/speed_vs_error*: every solver to n = 1024, one process each","12 min")
+	$(call say,"results/speed_vs_error*: every solver to n = 1024 in a process of its own","12 min")
 	$(BUILD)/bench --out results
 
 results/micro_benchmarks.md: $(BUILD)/micro_bench
