@@ -22,7 +22,9 @@ inline Problem paper_problem(int n, SamplingKind kind, double R = NAN) {
 
 // A published constant of the clamped plate, from reference/plate_constants.csv.
 inline double plate_constant(const std::string& key) {
-  return plate::plate_constant(std::string(PLATE_SOURCE_DIR) + "/reference", key);
+  static const std::string path = std::string(PLATE_SOURCE_DIR) + "/reference/plate_constants.csv";
+  static const auto numbers = read_paper_numbers(path);
+  return published(numbers, key, path);
 }
 
 // Largest asymmetry of the nodal values over the eight symmetries of the n x n grid.

@@ -50,8 +50,7 @@ const std::vector<Quantity> kQuantities = {
 };
 constexpr double kNu = 0.3;
 
-Row solve_one(SamplingKind kind, int n, const std::map<std::string, double>& pub) {
-  const PaperScene scene = paper_scene(pub);
+Row solve_one(SamplingKind kind, int n, const PaperScene& scene) {
   const Field phi = scene.obstacle(), no_load = [](double, double) { return 0.0; };
   const auto t0 = Clock::now();
   const Problem p = make_problem(make_grid(n), SamplingSpec{kind, scene.rim()}, phi, no_load);
@@ -261,6 +260,7 @@ int main(int argc, char** argv) {
   try {
     if (finest < 4 * coarsest) throw std::invalid_argument("--finest must be at least 4 times --coarsest (three grids)");
     const auto pub = read_paper_numbers(numbers);
+    const PaperScene scene = paper_scene(pub);
     Study s;
     for (int n = coarsest; n <= finest; n *= 2) s.grids.push_back(n);
     std::ostringstream timings;
@@ -269,7 +269,7 @@ int main(int argc, char** argv) {
     for (SamplingKind k : kKinds)
       for (int n : s.grids) {
         std::cerr << "continuum: " << to_string(k) << " sampling, n = " << n << "\n";
-        s.rows.push_back(solve_one(k, n, pub));
+        s.rows.push_back(solve_one(k, n, scene));
         timings << to_string(k) << "," << n << "," << fmt("%.3g", s.rows.back().seconds) << "\n";
       }
     for (const Quantity& q : kQuantities)

@@ -52,6 +52,7 @@ struct Setup {
   std::string geo = "reference/square_with_circle.geo", edp = "reference/penalty_hct.edp", reference = "reference";
   std::string work = "build/crosscheck-work", out = "results";  // not build/crosscheck: the program
   CrossSettings s;
+  PaperScene scene;           // from reference/paper_numbers.csv
   double uniform_centre = 0;  // published, from reference/plate_constants.csv
 };
 
@@ -74,7 +75,7 @@ Runs run_both(const Setup& u) {
     r.ff.runs.push_back(freefem_values(run_freefem(u.edp, msh, args.str(), msh + ".json"), lc));
     r.ff_uniform.push_back(run_freefem(u.edp, msh, "-obstacle none -load 1", msh + ".uniform.json").at("w_centre").get<double>());
   }
-  const Field phi = read_paper_scene(u.reference).obstacle(s.R);
+  const Field phi = u.scene.obstacle(s.R);
   for (int n : u.ns) {
     std::cerr << "crosscheck: this code on n = " << n << "\n";
     r.gauss.runs.push_back(solve_ours(n, SamplingKind::Gauss, phi, s));
@@ -222,7 +223,8 @@ int main(int argc, char** argv) {
   try {
     std::filesystem::create_directories(u.work);
     std::filesystem::create_directories(u.out);
-    u.s.R = read_paper_scene(u.reference).height;
+    u.scene = read_paper_scene(u.reference);
+    u.s.R = u.scene.height;
     u.uniform_centre = plate_constant(u.reference, "uniform_centre");
     const Runs runs = run_both(u);
     write_tables(u, runs);

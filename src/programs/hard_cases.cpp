@@ -303,9 +303,11 @@ int main(int argc, char** argv) {
   if (const int status = parse_options(app, argc, argv, "hard_cases"); status >= 0) return status;
   try {
     std::filesystem::create_directories(c.scratch);
-    c.lambda1 = plate_constant(reference, "lambda1");
-    c.point = plate_constant(reference, "point_centre");
-    c.sag = plate_constant(reference, "uniform_centre");
+    const std::string constants_path = reference + "/plate_constants.csv";
+    const auto constants = read_paper_numbers(constants_path);
+    c.lambda1 = published(constants, "lambda1", constants_path);
+    c.point = published(constants, "point_centre", constants_path);
+    c.sag = published(constants, "uniform_centre", constants_path);
     c.scene = read_paper_scene(reference);
     std::ostringstream md;
     md << "<!-- Written by build/hard_cases (make all); do not edit. -->\n\n";

@@ -266,7 +266,7 @@ void echo(const CLI::App& app, const Options& o, Run& r) {
 plate::SolveResult solve_exactly(Run& r, const plate::Problem& problem, plate::ExactResult& exact, plate::VectorXd& xi,
                                  plate::Progress& progress) {
   using namespace plate;
-  r.exact_opt.on_iterate = [&](int cells, int iteration, int held, int changed) {
+  if (!progress.quiet()) r.exact_opt.on_iterate = [&](int cells, int iteration, int held, int changed) {
     const std::string grid = "grid " + std::to_string(cells) + " cells: ";
     if (iteration == 0)
       progress.stage(grid + "starting with " + std::to_string(held) + " candidate rows");
@@ -292,11 +292,13 @@ plate::SolveResult solve_penalty(Run& r, const plate::Problem& problem, double L
                                  plate::Progress& progress) {
   using namespace plate;
   VectorXd last;
-  r.opt.on_iterate = [&](double eps, int iteration, const VectorXd& w) {
-    const double step = last.size() ? max_nodal_abs(w - last) : max_nodal_abs(w);
-    last = w;
-    progress.step("eps = " + fmt("%g", eps / L4) + ": iteration " + std::to_string(iteration) + ", step " + fmt("%.2e", step));
-  };
+  if (!progress.quiet())  // the hook copies each iterate: not worth it when nothing is printed
+    r.opt.on_iterate = [&](double eps, int iteration, const VectorXd& w) {
+      const double step = last.size() ? max_nodal_abs(w - last) : max_nodal_abs(w);
+      last = w;
+      progress.step("eps = " + fmt("%g", eps / L4) + ": iteration " + std::to_string(iteration) + ", step " +
+                    fmt("%.2e", step));
+    };
   SolveResult result = solve(problem, r.opt);
   xi = contact_force_density(problem, result.w, result.eps);
   const double below = (problem.phi - problem.sampling.S * result.w).cwiseMax(0.0).maxCoeff();

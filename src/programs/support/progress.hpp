@@ -15,6 +15,7 @@ class Progress {
   void stage(const std::string& what);
   // A step of an iteration: reported at most once a second, so a long loop cannot flood stderr.
   void step(const std::string& what);
+  bool quiet() const { return quiet_; }
 
  private:
   void print(double at, const std::string& what) const;

@@ -69,9 +69,9 @@ std::map<std::string, double> read_paper_numbers(const std::string& path) {
   return numbers;
 }
 
-double published(const std::map<std::string, double>& numbers, const std::string& key) {
+double published(const std::map<std::string, double>& numbers, const std::string& key, const std::string& source) {
   const auto it = numbers.find(key);
-  if (it == numbers.end()) throw std::runtime_error("reference/paper_numbers.csv has no key " + key);
+  if (it == numbers.end()) throw std::runtime_error(source + " has no key " + key);
   return it->second;
 }
 
@@ -95,10 +95,7 @@ PaperScene read_paper_scene(const std::string& reference_dir) {
 
 double plate_constant(const std::string& reference_dir, const std::string& key) {
   const std::string path = reference_dir + "/plate_constants.csv";
-  const auto numbers = read_paper_numbers(path);
-  const auto it = numbers.find(key);
-  if (it == numbers.end()) throw std::runtime_error(path + " has no key " + key);
-  return it->second;
+  return published(read_paper_numbers(path), key, path);
 }
 
 }  // namespace plate

@@ -23,7 +23,9 @@ std::vector<PublishedRow> read_paper_table(const std::string& path);
 std::map<std::string, double> read_paper_numbers(const std::string& path);
 
 // One value of read_paper_numbers' map; throws std::runtime_error naming a missing key.
-double published(const std::map<std::string, double>& numbers, const std::string& key);
+// `source` names the file the numbers came from, for the message.
+double published(const std::map<std::string, double>& numbers, const std::string& key,
+                 const std::string& source = "reference/paper_numbers.csv");
 
 // The paper's experiment as reference/paper_numbers.csv states it: the one place where its obstacle
 // (height R on the closed disk (10), no constraint outside) and its grid are spelled.
