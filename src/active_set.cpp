@@ -296,4 +296,8 @@ ExactResult solve_exact(const Grid& g, const SamplingSpec& spec, const Field& ob
   return r;
 }
 
+double exact_solve_roundoff(int n, double v) {
+  return DBL_EPSILON * std::pow(static_cast<double>(n), 3) * std::abs(v);
+}
+
 }  // namespace plate

@@ -1,40 +1,38 @@
 // Our side of the cross-check, and the rule that decides whether two codes agree.
 #include "crosscheck.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "active_set.hpp"
 #include "cholesky.hpp"
 #include "contact.hpp"
+#include "line_force.hpp"
 #include "norms.hpp"
-#include "schemes.hpp"
 #include "stopwatch.hpp"
 
 namespace plate {
 
-CheckValues solve_ours(int n, SamplingKind kind, const Field& phi, const CrossSettings& s) {
+CheckValues solve_ours(int n, const SamplingSpec& spec, const Field& phi, double radius) {
   const auto t0 = Clock::now();
-  const Grid g = make_grid(n);
-  const Problem p = make_problem(g, kind, phi, [](double, double) { return 0.0; });
-  SolveOptions o;
-  o.scheme = Scheme::Nonlinear;
-  o.tol = s.tol;
-  o.eps_start = s.eps_start;
-  o.eps_min = s.eps_min;
-  const SolveResult r = solve(p, o);
+  const Field no_load = [](double, double) { return 0.0; };
+  const Problem p = make_problem(make_grid(n), spec, phi, no_load);
+  const ExactResult x = solve_exact(p, phi, no_load, ExactOptions{});
   CheckValues v;
-  v.code = std::string("bfs-") + to_string(kind);
+  v.code = std::string("bfs-") + to_string(spec.kind);
   v.grid = std::to_string(n) + " x " + std::to_string(n);
-  v.h = g.h;
-  v.unknowns = g.unknowns();
-  v.converged = r.converged;
-  v.iterations = r.total_iterations();
-  v.eps_final = r.eps;
-  v.max_w = max_nodal_abs(r.w);
-  v.w_rim = evaluate(g, r.w, kCheckPoints[0][0], kCheckPoints[0][1]).w;
-  v.w_mid = evaluate(g, r.w, kCheckPoints[1][0], kCheckPoints[1][1]).w;
-  v.w_diag = evaluate(g, r.w, kCheckPoints[2][0], kCheckPoints[2][1]).w;
-  v.force = total_contact_force(p, contact_force_density(p, r.w, r.eps));
+  v.cells = n;
+  v.h = p.grid.h;
+  v.unknowns = p.grid.unknowns();
+  v.certified = x.converged;
+  for (const ExactLevel& l : x.levels) v.iterations += l.pdas_iterations;
+  v.max_w = max_nodal_abs(x.w);
+  for (const CheckPoint& c : kCheckPoints) v.w_at.push_back(evaluate(p.grid, x.w, c.x, c.y).w);
+  v.force = total_contact_force(p, x.lambda);
+  v.mean_line = v.force / (2 * M_PI * radius);  // with f = 0 the whole push is on the rim
+  const LineForce line = line_force(p, x.lambda);
+  v.q0 = line_force_fit(line, 0), v.q45 = line_force_fit(line, M_PI / 4);  // NaN without edge rows
   v.seconds = seconds_since(t0);
   return v;
 }
@@ -52,21 +50,27 @@ std::vector<double> values_of(const std::vector<CheckValues>& runs, double Check
   return v;
 }
 
+std::vector<double> values_at(const std::vector<CheckValues>& runs, int point) {
+  std::vector<double> v;
+  for (const auto& r : runs) v.push_back(r.w_at.at(point));
+  return v;
+}
+
+// @region agreement
+// Two limits agree within the sum of their error bars, each at least what round-off can move.
+Agreement compare_limits(const Extrapolation& a, const Extrapolation& b) {
+  Agreement g;
+  g.difference = std::abs(a.limit - b.limit);
+  g.tolerance = std::max(a.bar, a.bar_noise) + std::max(b.bar, b.bar_noise);
+  g.agree = g.difference <= g.tolerance;
+  g.steady = a.steady && b.steady;
+  return g;
+}
+// @end agreement
+
 double last_increment(const std::vector<double>& values) {
   if (values.size() < 2) throw std::invalid_argument("last_increment: need at least two grids");
   return std::abs(values.back() - values[values.size() - 2]);
-}
-
-double error_bound(const std::vector<double>& values) {
-  const double last = last_increment(values);
-  if (values.size() < 3) return last;
-  return std::max(last, std::abs(values[values.size() - 2] - values[values.size() - 3]));
-}
-
-bool agree(const std::vector<double>& a, const std::vector<double>& b, double* difference, double* tolerance) {
-  *difference = std::abs(a.back() - b.back());
-  *tolerance = error_bound(a) + error_bound(b);
-  return *difference <= *tolerance;
 }
 
 }  // namespace plate

@@ -3,10 +3,33 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <Eigen/QR>
 
 namespace plate {
+
+namespace {
+// Least squares q(theta) ~ sum_k a_k cos(4 k theta), with no more harmonics than the points resolve.
+void fit_harmonics(LineForce& f, int harmonics) {
+  const int m = static_cast<int>(f.theta.size());
+  harmonics = std::min(harmonics, m / 8 + 1);
+  if (m == 0 || harmonics <= 0) return;
+  Eigen::MatrixXd A(m, harmonics);
+  Eigen::VectorXd b(m);
+  for (int i = 0; i < m; ++i) {
+    for (int k = 0; k < harmonics; ++k) A(i, k) = std::cos(4.0 * k * f.theta[i]);
+    b[i] = f.q[i];
+  }
+  const Eigen::VectorXd a = A.colPivHouseholderQr().solve(b);
+  f.fourier.assign(a.data(), a.data() + a.size());
+}
+void summarise(LineForce& f) {
+  f.mean = f.total / f.length;
+  f.min = *std::min_element(f.q.begin(), f.q.end());
+  f.max = *std::max_element(f.q.begin(), f.q.end());
+}
+}  // namespace
 
 // @region line-force
 // Eq. (9): the line load q on the edge; its mean is the total over the length.
@@ -21,24 +44,35 @@ LineForce line_force(const Problem& p, const VectorXd& lambda, int harmonics) {
     f.q.push_back(lambda[row]);
     f.total += s.weights[row] * lambda[row];
   }
-  f.mean = f.total / f.length;
-  f.min = *std::min_element(f.q.begin(), f.q.end());
-  f.max = *std::max_element(f.q.begin(), f.q.end());
-  const int m = static_cast<int>(f.theta.size());
-  harmonics = std::min(harmonics, m / 8 + 1);
-  if (m > 0 && harmonics > 0) {
-    Eigen::MatrixXd A(m, harmonics);
-    Eigen::VectorXd b(m);
-    for (int i = 0; i < m; ++i) {
-      for (int k = 0; k < harmonics; ++k) A(i, k) = std::cos(4.0 * k * f.theta[i]);
-      b[i] = f.q[i];
-    }
-    const Eigen::VectorXd a = A.colPivHouseholderQr().solve(b);
-    f.fourier.assign(a.data(), a.data() + a.size());
-  }
+  summarise(f);
+  fit_harmonics(f, harmonics);
   return f;
 }
 // @end line-force
+
+LineForce line_force_from_point_forces(const std::vector<double>& theta, const std::vector<double>& force,
+                                       double radius, int harmonics) {
+  if (theta.size() != force.size() || theta.size() < 2 || !(radius > 0))
+    throw std::invalid_argument("line_force_from_point_forces: need as many angles as forces, at least two, and r > 0");
+  std::vector<size_t> order(theta.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](size_t i, size_t j) { return theta[i] < theta[j]; });
+  LineForce f;
+  f.length = 2 * M_PI * radius;
+  const size_t m = order.size();
+  for (size_t k = 0; k < m; ++k) {
+    // Half the angle to each neighbour, around the circle.
+    const double before = theta[order[k]] - theta[order[(k + m - 1) % m]], after = theta[order[(k + 1) % m]] - theta[order[k]];
+    const double arc = radius * 0.5 * (std::remainder(before, 2 * M_PI) + std::remainder(after, 2 * M_PI));
+    if (!(arc > 0)) throw std::invalid_argument("line_force_from_point_forces: two points at one angle");
+    f.theta.push_back(theta[order[k]]);
+    f.q.push_back(force[order[k]] / arc);
+    f.total += force[order[k]];
+  }
+  summarise(f);
+  fit_harmonics(f, harmonics);
+  return f;
+}
 
 double line_force_fit(const LineForce& f, double theta) {
   if (f.fourier.empty()) return NAN;

@@ -25,6 +25,12 @@ struct LineForce {
 // sample). Empty when the sampling has no edge rows.
 LineForce line_force(const Problem& p, const VectorXd& lambda, int harmonics = 4);
 
+// The same from point forces F_k at angles theta_k on a circle of radius r (another code's
+// multipliers at the circle's mesh vertices): q_k = F_k over the arc nearer to point k than to its
+// neighbours. Throws std::invalid_argument on sizes that differ or on fewer than two points.
+LineForce line_force_from_point_forces(const std::vector<double>& theta, const std::vector<double>& force,
+                                       double radius, int harmonics = 4);
+
 // q at the edge point nearest the angle theta (circles only). Point values scatter by about 10%
 // about a smooth curve, because the finite element space cannot resolve a load at the scale of h.
 double line_force_at(const LineForce& f, double theta);

@@ -73,30 +73,15 @@ Row solve_one(SamplingKind kind, int n, const PaperScene& scene) {
   return row;
 }
 
-// The round-off of an exact solve grows with the conditioning of the grid. We bound it by
-// u n^3 relative: the same runs with one and with two BLAS threads differ by at most a sixth of
-// that to n = 512 (the most in the fitted q(pi/4); a three-hundredth in the deflections). No digit
-// below 10 times the bound is printed.
-double roundoff(int n, double v) { return DBL_EPSILON * std::pow(static_cast<double>(n), 3) * std::abs(v); }
-
 std::string num(double v, double noise) { return std::isfinite(v) ? fmt_above(v, noise, 10, 'g') : ""; }
-std::string num(const Row& r, double v) { return num(v, roundoff(r.n, v)); }
+std::string num(const Row& r, double v) { return num(v, exact_solve_roundoff(r.n, v)); }
 
 std::vector<double> noise_column(const std::vector<Row>& rows, SamplingKind kind, double Row::*field) {
   std::vector<double> z;
   for (const Row& r : rows)
-    if (r.kind == kind) z.push_back(roundoff(r.n, r.*field));
+    if (r.kind == kind) z.push_back(exact_solve_roundoff(r.n, r.*field));
   return z;
 }
-
-// The bar as a number for programs: where it is within the noise, the noise's bound.
-std::string bar_number(const Extrapolation& e, int digits = 3) {
-  const std::string b = fmt_above(e.bar, e.bar_noise, digits);
-  return b[0] == '<' ? b.substr(2) : b;
-}
-
-// A bar within the noise is reported as the noise's bound, and said to be one.
-bool bar_is_roundoff(const Extrapolation& e) { return fmt_above(e.bar, e.bar_noise, 2)[0] == '<'; }
 
 std::vector<double> column(const std::vector<Row>& rows, SamplingKind kind, double Row::*field) {
   std::vector<double> v;
@@ -217,8 +202,8 @@ std::string errors(const Study& s) {
   const double w = W.limit, f = F.limit;
   for (const Row& r : s.rows)
     o << to_string(r.kind) << "," << r.n << "," << fmt("%.10g", 1.0 / r.n) << ","
-      << fmt_above(std::abs(r.max_w - w) / w, (roundoff(r.n, r.max_w) + W.limit_noise) / w, 5) << ","
-      << fmt_above(std::abs(r.force - f) / f, (roundoff(r.n, r.force) + F.limit_noise) / f, 5) << "\n";
+      << fmt_above(std::abs(r.max_w - w) / w, (exact_solve_roundoff(r.n, r.max_w) + W.limit_noise) / w, 5) << ","
+      << fmt_above(std::abs(r.force - f) / f, (exact_solve_roundoff(r.n, r.force) + F.limit_noise) / f, 5) << "\n";
   return o.str();
 }
 
@@ -236,7 +221,7 @@ std::string line_loads(const Study& s) {
     if (r.kind == SamplingKind::Edge && r.n >= 32 && r.n <= 256) {
       if (!first) o << "\n\n";  // gnuplot: one data block per grid
       first = false;
-      const double noise = roundoff(r.n, r.line.max) * static_cast<double>(r.line.q.size());
+      const double noise = exact_solve_roundoff(r.n, r.line.max) * static_cast<double>(r.line.q.size());
       for (size_t k = 0; k < r.line.q.size(); ++k)
         o << r.n << "," << fmt("%.10g", r.line.theta[k]) << "," << num(r.line.q[k], noise) << "\n";
     }

@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
 
     std::ostringstream points, surface, contact;
     points << "# Written by build/fig1: the check points of results/crosscheck.md and the table (x, y).\nx,y\n0.5,0.5\n";
-    for (const auto& c : kCheckPoints) points << c[0] << "," << c[1] << "\n";
+    for (const auto& c : kCheckPoints) points << c.x << "," << c.y << "\n";
     surface << "# Written by build/fig1: w on a lattice, h = 1/" << n << ", " << sampling
             << " sampling, eps = " << eps << ". Columns: x y w (blank line between rows).\n";
     for (int j = 0; j <= lattice; ++j) {

@@ -1,7 +1,9 @@
-// Running the other code of the cross-check: gmsh meshes the square with its contact circle, and
-// FreeFEM solves the paper's problem on that mesh (reference/penalty_hct.edp), writing JSON.
+// Running the other code of the cross-check: gmsh meshes a plate with its contact circle, and
+// FreeFEM solves the contact problem on that mesh (reference/contact_hct.edp), writing JSON.
 #pragma once
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -9,16 +11,28 @@
 
 namespace plate {
 
-// gmsh: mesh the .geo with size lc into an MSH 2 file. Throws std::runtime_error on failure.
-void gmsh_mesh(const std::string& geo, double lc, const std::string& msh);
+// gmsh: mesh the .geo, its parameters set by `numbers` (name, value), into an MSH 2 file. Throws
+// std::runtime_error on failure.
+void gmsh_mesh(const std::string& geo, const std::vector<std::pair<std::string, double>>& numbers,
+               const std::string& msh);
+
+// The check points, as the script's -points file wants them: their number, then "x y" each.
+void write_points(const std::string& path, const std::vector<std::pair<double, double>>& points);
 
 // FreeFEM: run the .edp on a mesh with extra "-name value" arguments, its JSON written to out_json
 // and parsed. Throws std::runtime_error if FreeFem++ fails, exits with an error or writes no JSON.
 nlohmann::json run_freefem(const std::string& edp, const std::string& msh, const std::string& args,
                            const std::string& out_json);
 
-// The check values in the script's JSON, on a mesh of size lc. Throws std::runtime_error naming a
-// missing key.
-CheckValues freefem_values(const nlohmann::json& j, double lc);
+// A bound on the round-off in a value v FreeFEM computes on a mesh whose longest edge is h:
+// 30 u h^-4 |v| (the conditioning of the plate's stiffness grows as h^-4). The same runs with one and
+// with two BLAS threads differ by at most a sixth of it, on the cross-check's meshes.
+double freefem_roundoff(double h, double v);
+inline constexpr const char* kFreefemRoundoffRule = "30 u h^-4 relative, h the longest edge";
+
+// The check values in the script's JSON (w_at in the order of its points file), on the mesh with
+// `cells` cells along a quarter of the contact circle of radius `radius`. Throws
+// std::runtime_error naming a missing key.
+CheckValues freefem_values(const nlohmann::json& j, int cells, double radius);
 
 }  // namespace plate

@@ -26,4 +26,11 @@ std::string verdict(const Extrapolation& e) {
          format_order(e.orders[t - 1], e.order_noise[t - 1]) + fallback;
 }
 
+std::string bar_number(const Extrapolation& e, int digits) {
+  const std::string b = fmt_above(e.bar, e.bar_noise, digits);
+  return b[0] == '<' ? b.substr(2) : b;
+}
+
+bool bar_is_roundoff(const Extrapolation& e) { return fmt_above(e.bar, e.bar_noise, 2)[0] == '<'; }
+
 }  // namespace plate

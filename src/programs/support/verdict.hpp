@@ -13,4 +13,9 @@ std::string format_order(double p, double noise);
 // with its last increment.
 std::string verdict(const Extrapolation& e);
 
+// The bar as a bare number: where it is within the noise, the noise's bound.
+std::string bar_number(const Extrapolation& e, int digits = 3);
+// Whether the bar printed is the noise's bound rather than the bar itself.
+bool bar_is_roundoff(const Extrapolation& e);
+
 }  // namespace plate

@@ -1,0 +1,63 @@
+// A clamped disk of radius a about (cx, cy), with the rim of a coaxial flat punch of radius r < a
+// embedded, meshed as an O-grid of transfinite patches: a central square, a ring out to the punch's
+// rim, and an annulus out to the clamped edge. Mesh vertices lie on the rim (the contact line), 4 n
+// cells along each quarter of it; the clamped edge is the polygon through its vertices.
+//   gmsh -2 -format msh22 -setnumber n 4 disk_with_punch.geo -o mesh.msh
+// Physical tags, read by FreeFEM's gmshload as labels: 1 = clamped boundary, 2 = rim, 1 = surface.
+If (!Exists(n))
+  n = 2;
+EndIf
+If (!Exists(r))
+  r = 0.25;
+EndIf
+If (!Exists(a))
+  a = 0.5;
+EndIf
+If (!Exists(cx))
+  cx = 0.5;
+EndIf
+If (!Exists(cy))
+  cy = 0.5;
+EndIf
+N = 4 * n;      // cells along a quarter of either circle and a side of the central square
+M1 = n;         // cells from the central square out to the rim
+M2 = 2 * n;     // cells from the rim out to the clamped edge
+b = 0.4 * r;    // half side of the central square
+s = Sqrt(0.5);
+
+Point(1) = {cx, cy, 0};
+Point(2) = {cx + b, cy - b, 0}; Point(3) = {cx + b, cy + b, 0};
+Point(4) = {cx - b, cy + b, 0}; Point(5) = {cx - b, cy - b, 0};
+Point(6) = {cx + r * s, cy - r * s, 0}; Point(7) = {cx + r * s, cy + r * s, 0};
+Point(8) = {cx - r * s, cy + r * s, 0}; Point(9) = {cx - r * s, cy - r * s, 0};
+Point(10) = {cx + a * s, cy - a * s, 0}; Point(11) = {cx + a * s, cy + a * s, 0};
+Point(12) = {cx - a * s, cy + a * s, 0}; Point(13) = {cx - a * s, cy - a * s, 0};
+Line(1) = {2, 3}; Line(2) = {3, 4}; Line(3) = {4, 5}; Line(4) = {5, 2};                          // central square
+Circle(5) = {6, 1, 7}; Circle(6) = {7, 1, 8}; Circle(7) = {8, 1, 9}; Circle(8) = {9, 1, 6};      // the rim
+Circle(9) = {10, 1, 11}; Circle(10) = {11, 1, 12}; Circle(11) = {12, 1, 13}; Circle(12) = {13, 1, 10};  // clamped edge
+Line(13) = {2, 6}; Line(14) = {3, 7}; Line(15) = {4, 8}; Line(16) = {5, 9};                      // spokes in
+Line(17) = {6, 10}; Line(18) = {7, 11}; Line(19) = {8, 12}; Line(20) = {9, 13};                  // spokes out
+Transfinite Curve{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12} = N + 1;
+Transfinite Curve{13, 14, 15, 16} = M1 + 1;
+Transfinite Curve{17, 18, 19, 20} = M2 + 1;
+Curve Loop(1) = {1, 2, 3, 4};     Plane Surface(1) = {1};
+Curve Loop(2) = {13, 5, -14, -1}; Plane Surface(2) = {2};
+Curve Loop(3) = {14, 6, -15, -2}; Plane Surface(3) = {3};
+Curve Loop(4) = {15, 7, -16, -3}; Plane Surface(4) = {4};
+Curve Loop(5) = {16, 8, -13, -4}; Plane Surface(5) = {5};
+Curve Loop(6) = {17, 9, -18, -5}; Plane Surface(6) = {6};
+Curve Loop(7) = {18, 10, -19, -6}; Plane Surface(7) = {7};
+Curve Loop(8) = {19, 11, -20, -7}; Plane Surface(8) = {8};
+Curve Loop(9) = {20, 12, -17, -8}; Plane Surface(9) = {9};
+Transfinite Surface{1} = {2, 3, 4, 5} Alternate;
+Transfinite Surface{2} = {2, 6, 7, 3} Alternate;
+Transfinite Surface{3} = {3, 7, 8, 4} Alternate;
+Transfinite Surface{4} = {4, 8, 9, 5} Alternate;
+Transfinite Surface{5} = {5, 9, 6, 2} Alternate;
+Transfinite Surface{6} = {6, 10, 11, 7} Alternate;
+Transfinite Surface{7} = {7, 11, 12, 8} Alternate;
+Transfinite Surface{8} = {8, 12, 13, 9} Alternate;
+Transfinite Surface{9} = {9, 13, 10, 6} Alternate;
+Physical Curve(1) = {9, 10, 11, 12};
+Physical Curve(2) = {5, 6, 7, 8};
+Physical Surface(1) = {1, 2, 3, 4, 5, 6, 7, 8, 9};

@@ -1,0 +1,70 @@
+// Richardson extrapolation (D16) on sequences whose limit is known, and the agreement rule built on it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "crosscheck.hpp"
+#include "richardson.hpp"
+
+using namespace plate;
+
+namespace {
+// v(h) = L + C h^p + D h^(p+1) on h = 1/8, 1/16, ...
+std::vector<double> sequence(double L, double C, double p, double D, int grids) {
+  std::vector<double> v;
+  for (int k = 0; k < grids; ++k) {
+    const double h = std::pow(0.5, 3 + k);
+    v.push_back(L + C * std::pow(h, p) + D * std::pow(h, p + 1));
+  }
+  return v;
+}
+}  // namespace
+
+TEST(Richardson, FindsTheOrderAndTheLimitOfAKnownSequence) {
+  const double L = 0.0976921, p = 3;
+  const auto v = sequence(L, 2.0, p, -5.0, 6);
+  const Extrapolation e = extrapolate(v);
+  ASSERT_TRUE(e.steady);
+  EXPECT_NEAR(e.orders.back(), p, 0.05);
+  // The bar bounds the true error, and is not vacuous: below the finest value's own error, which
+  // the limit improves on at least tenfold.
+  EXPECT_LE(std::abs(e.limit - L), e.bar);
+  EXPECT_LT(e.bar, std::abs(v.back() - L));
+  EXPECT_LT(std::abs(e.limit - L), 0.1 * std::abs(v.back() - L));
+}
+
+TEST(Richardson, AnIrregularSequenceKeepsItsFinestValueAndLastIncrement) {
+  std::vector<double> v = sequence(1.0, 1.0, 2, 0, 5);
+  v[3] += 0.02;  // one grid cut differently: the increments change sign
+  const Extrapolation e = extrapolate(v);
+  EXPECT_FALSE(e.steady);
+  EXPECT_EQ(e.limit, v.back());
+  EXPECT_DOUBLE_EQ(e.bar, std::abs(v[4] - v[3]));
+}
+
+TEST(Richardson, OrdersThatDriftAreNotSteady) {
+  // increments 1, 1/4, 1/32: orders 2 then 3, more than 0.3 apart
+  const Extrapolation e = extrapolate({0, 1, 1.25, 1.28125});
+  ASSERT_EQ(e.orders.size(), 2u);
+  EXPECT_NEAR(e.orders[0], 2, 1e-12);
+  EXPECT_NEAR(e.orders[1], 3, 1e-12);
+  EXPECT_FALSE(e.steady);
+}
+
+TEST(Agreement, LimitsAgreeWithinTheSumOfTheirBarsAndNoCloser) {
+  Extrapolation a, b;
+  a.limit = 1.0, a.bar = 1e-6, a.steady = true;
+  b.limit = 1.0 + 1.5e-6, b.bar = 1e-6, b.steady = true;
+  Agreement g = compare_limits(a, b);
+  EXPECT_TRUE(g.agree);
+  EXPECT_TRUE(g.steady);
+  EXPECT_NEAR(g.tolerance, 2e-6, 1e-18);
+  b.limit = 1.0 + 2.5e-6;
+  EXPECT_FALSE(compare_limits(a, b).agree);
+  // A bar below the round-off of the limit counts as the round-off.
+  b.bar = 0, b.bar_noise = 2e-6, b.steady = false;
+  g = compare_limits(a, b);
+  EXPECT_NEAR(g.tolerance, 3e-6, 1e-18);
+  EXPECT_TRUE(g.agree);
+  EXPECT_FALSE(g.steady);
+}
