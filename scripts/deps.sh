@@ -3,6 +3,9 @@
 # libopenblas0-pthread becomes the system BLAS (update-alternatives): CHOLMOD's supernodal
 # factorisation of the BFS matrix (n = 128, 64516 unknowns, 3.2 GFlop) took 1.21 s with the
 # reference BLAS and 0.37-0.67 s with OpenBLAS on this 2-core machine.
+# libpetsc-real-dev (PETSc 3.18, for the peer of `make bench` and its agreement test) brings 79
+# packages, about 240 MiB installed (OpenMPI, MUMPS, HYPRE, Trilinos among them); on this machine
+# apt-get installed them in 12 s from a warm cache.
 # Usage: scripts/deps.sh   (called by `make deps`; root or sudo, otherwise prints the apt-get line)
 set -euo pipefail
 
@@ -13,6 +16,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   freefem++ libfreefem++ gmsh
   pandoc gnuplot-nox
+  libpetsc-real-dev
 )
 
 missing=()

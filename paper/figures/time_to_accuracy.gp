@@ -1,6 +1,7 @@
 # Error against time, from results/time_to_accuracy.csv (written by build/time_to_accuracy): the
 # relative distance of max w and of the total contact force to the continuum limit, against the
-# wall time of the whole plate process, one line per solver and sampling (n = 8, 16, ...).
+# wall time of the whole process (plate, PETSc's SNESVI peer, or gmsh and FreeFem++), one line per
+# solver and sampling (n = 8, 16, ...; FreeFEM: 4, 8, ... cells per quarter circle).
 # Filled points: certified runs (exit 0); open points: runs that exit 3.
 # Usage: gnuplot -e "fmt='svg'; out='results/time_to_accuracy.svg'" paper/figures/time_to_accuracy.gp
 if (fmt eq 'svg') { set terminal svg size 1000,450 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 1000,450 font 'Helvetica,11' }
@@ -9,7 +10,7 @@ set datafile separator ','
 set logscale xy
 set format y '10^{%L}'
 set format x '10^{%L}'
-set xlabel 'wall time of the plate process (s)'
+set xlabel 'wall time of the whole process (s)'
 set ylabel 'relative error against the limit'
 set grid
 set key bottom left box opaque font ',10'
@@ -17,7 +18,7 @@ data = 'results/time_to_accuracy.csv'
 stats data using 2 nooutput
 blocks = STATS_blocks
 # The configurations of src/programs/time_to_accuracy.cpp, in its order (the CSV has one block each).
-array names[6] = ["exact edge (default)", "exact nodes", "exact Gauss", "(3a) edge", "(3a) Gauss (paper)", "(5a) Gauss (paper)"]
+array names[9] = ["exact edge (default)", "exact nodes", "exact Gauss", "(3a) edge", "(3a) Gauss (paper)", "(5a) Gauss (paper)", "SNESVI rsls nodes", "SNESVI ssls nodes", "FreeFEM HCT, vertices"]
 ok(col) = (column(3) == 0 && column(col) > 0) ? column(col) : NaN
 bad(col) = (column(3) != 0 && column(col) > 0) ? column(col) : NaN
 set multiplot layout 1,2

@@ -98,13 +98,28 @@ std::map<std::string, double> run_job(const Job& job, const Field& obstacle, std
   return v;
 }
 
-// Runs a job in a child process and collects its measurements and its peak resident memory.
-Outcome run_in_child(const Job& job, const Field& obstacle, const std::filesystem::path& scratch) {
+bool is_peer(const Job& job) { return job.solver.rfind("snesvi-", 0) == 0; }
+
+// Where the peer program is, and where it reads the paper's numbers.
+struct Peer {
+  std::string program, reference;
+};
+
+// Runs a job in a child process and collects its measurements and its peak resident memory. A
+// peer's child becomes the PETSc program itself, which writes the same file.
+Outcome run_in_child(const Job& job, const Field& obstacle, const std::filesystem::path& scratch, const Peer& peer) {
   Outcome out{job, {}, {}, 0, false};
   const std::filesystem::path file = scratch / ("w_" + job.solver + "_" + std::to_string(job.n) + ".txt");
   std::cout.flush();
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("bench: fork failed");
+  if (pid == 0 && is_peer(job)) {
+    const std::string n = std::to_string(job.n), method = job.solver.substr(7), out = file.string();
+    execl(peer.program.c_str(), peer.program.c_str(), "-n", n.c_str(), "--method", method.c_str(), "--reference",
+          peer.reference.c_str(), "--out", out.c_str(), static_cast<char*>(nullptr));
+    std::cerr << "bench: cannot run " << peer.program << "\n";
+    _exit(kFailure);
+  }
   if (pid == 0) {
     int status = kFailure;
     try {
@@ -125,7 +140,9 @@ Outcome run_in_child(const Job& job, const Field& obstacle, const std::filesyste
   struct rusage ru {};
   wait4(pid, &status, 0, &ru);
   out.peak_mib = ru.ru_maxrss / 1024.0;
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return out;
+  // A peer that ran to the end but did not converge (exit 3) still reports what it reached.
+  const bool reported = WIFEXITED(status) && (WEXITSTATUS(status) == 0 || (is_peer(job) && WEXITSTATUS(status) == kNotConverged));
+  if (!reported) return out;
   std::ifstream f(file);
   std::string key;
   while (f >> key) {
@@ -192,17 +209,19 @@ std::string csv(const std::vector<Outcome>& outcomes, const std::map<int, const 
   std::ostringstream o;
   o << "# bench (make bench): the paper's problem (cylinder R = 0.0625, f = 0) with nodal sampling.\n"
        "# solver: baseline = one unconstrained analysis + factorisation + solve of K; exact = primal-dual active\n"
-       "# sets with grid sequencing; nonlinear = scheme (3a), linear = scheme (5a), both with eps continuation and\n"
+       "# sets with grid sequencing; snesvi-rsls, snesvi-ssls = PETSc's SNESVI (build/peer_snesvi) on the identical\n"
+       "# problem; nonlinear = scheme (3a), linear = scheme (5a), both with eps continuation and\n"
        "# stopping tolerance tol. seconds: the solve, without assembling the fine-grid problem (assemble_s);\n"
        "# ratio: seconds / baseline seconds on the same grid; peak_mib: the run's peak resident memory;\n"
        "# error_discrete: max over nodes |w - w_exact| with w_exact the exact solver's answer on the same grid;\n"
        "# error_limit: |w(0.5,0.5) - w_lim| with w_lim = " << fmt("%.9f", L.w) << " the h -> 0 estimate (see .md);\n"
-       "# certificate: worst relative entry of the exact solver's certificate. Timings vary from run to run.\n";
+       "# certificate: worst relative entry of our certificate (exact solver, and the peers' answers judged by it).\n"
+       "# Timings vary from run to run.\n";
   o << "solver,n,unknowns,tol,converged,iterations,factorizations,assemble_s,seconds,ratio,peak_mib,w_centre,"
        "error_discrete,error_limit,certificate\n";
   // Grouped by solver and tolerance, so that each forms one block (one line in the plot).
   std::vector<const Outcome*> order;
-  for (const char* solver : {"baseline", "exact", "nonlinear", "linear"})
+  for (const char* solver : {"baseline", "exact", "snesvi-rsls", "snesvi-ssls", "nonlinear", "linear"})
     for (double tol : {0.0, 1e-6, 1e-8})
       for (const Outcome& r : outcomes)
         if (r.job.solver == solver && r.job.tol == tol) order.push_back(&r);
@@ -229,7 +248,7 @@ std::string csv(const std::vector<Outcome>& outcomes, const std::map<int, const 
     o << fmt("%.10f", v.at("w_centre")) << ','
       << (e != exact_at.end() ? fmt("%.3e", max_diff(r.nodal, e->second->nodal)) : "") << ','
       << fmt("%.3e", std::abs(v.at("w_centre") - L.w)) << ','
-      << (r.job.solver == "exact" ? fmt("%.2e", v.at("certificate")) : "") << '\n';
+      << (r.job.solver == "exact" || is_peer(r.job) ? fmt("%.2e", v.at("certificate")) : "") << '\n';
   }
   return o.str();
 }
@@ -284,6 +303,55 @@ void penalty_table(std::ostream& md, const std::vector<Outcome>& outcomes, const
   }
 }
 
+// The peers: PETSc's SNESVI on the identical discrete problem, against our exact solver.
+void peers_table(std::ostream& md, const std::vector<Outcome>& outcomes, const ByN& exact_at, const Peer& peer) {
+  md << "\nPeers: PETSc's SNESVI (`" << peer.program << "`, PETSc 3.18) on the identical discrete problem (the same K, "
+        "F and nodal bounds), reduced-space Newton (rsls: CHOLMOD Cholesky of K on the free set) and semismooth "
+        "Newton (ssls: UMFPACK LU of the scaled Jacobian), full projected Newton steps, started from max(phi, 0); "
+        "each answer is judged by our certificate and compared with ours node by node:\n\n"
+        "| n | solver | certified | Newton its | factorisations | s | ratio to ours | peak MiB | certificate | "
+        "max nodal difference to ours |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const Outcome& r : outcomes) {
+    if (!is_peer(r.job)) continue;
+    md << "| " << r.job.n << " | " << r.job.solver.substr(7) << " | ";
+    if (!r.ok) {
+      md << "failed | | | | | | | |\n";
+      continue;
+    }
+    const auto e = exact_at.find(r.job.n);
+    const double ours = e != exact_at.end() ? e->second->v.at("seconds") : NAN;
+    md << (r.v.at("converged") != 0 ? "yes" : "**no**") << " | " << fmt("%.0f", r.v.at("iterations")) << " | "
+       << fmt("%.0f", r.v.at("factorizations")) << " | " << fmt("%.3g", r.v.at("seconds")) << " | "
+       << (std::isfinite(ours) ? fmt("%.1f", r.v.at("seconds") / ours) : "") << " | " << fmt("%.0f", r.peak_mib) << " | "
+       << fmt("%.1e", r.v.at("certificate")) << " | "
+       << (e != exact_at.end() ? fmt("%.1e", max_diff(r.nodal, e->second->nodal)) : "") << " |\n";
+  }
+}
+
+// Target: at n = 512, at least 3 times faster than the faster SNESVI variant that ran there.
+void peer_target(std::ostream& md, const std::vector<Outcome>& outcomes, const ByN& exact_at, int max_rsls, int max_ssls) {
+  const auto e = exact_at.find(512);
+  const Outcome* fastest = nullptr;
+  for (const Outcome& r : outcomes)
+    if (is_peer(r.job) && r.job.n == 512 && r.ok && r.v.at("converged") != 0 &&
+        (!fastest || r.v.at("seconds") < fastest->v.at("seconds")))
+      fastest = &r;
+  md << "- n = 512 against PETSc's SNESVI: ";
+  if (e == exact_at.end() || !fastest) {
+    md << "not measured (no certified run of both at n = 512; rsls runs to n = " << max_rsls << ", ssls to n = "
+       << max_ssls << ").\n";
+    return;
+  }
+  const double ratio = fastest->v.at("seconds") / e->second->v.at("seconds");
+  md << "ours " << fmt("%.3g", e->second->v.at("seconds")) << " s, the faster variant run there (" << fastest->job.solver.substr(7)
+     << ") " << fmt("%.3g", fastest->v.at("seconds")) << " s: " << fmt("%.1f", ratio) << " times faster (target >= 3: "
+     << met(ratio >= 3) << ")";
+  if (max_rsls < 512)
+    md << "; rsls is run only to n = " << max_rsls << ", because its Newton iterations grow with n (see the table) and "
+          "each factorises K on the free set afresh, so at n = 512 it would take far longer than ssls";
+  md << ".\n";
+}
+
 void centre_limit(std::ostream& md, const ByN& exact_at) {
   const Limit L = h_limit(exact_at);
   md << "\nThe h -> 0 limit of the centre deflection, from the exact solver on n = ";
@@ -335,13 +403,20 @@ void targets(std::ostream& md, const ByN& exact_at, const ByN& baseline_at, int 
   }
 }
 
-std::string report(const std::vector<Outcome>& outcomes, const ByN& exact_at, const ByN& baseline_at, int max_exact,
-                   int max_baseline) {
+struct Limits {
+  int max_exact = 1024, max_baseline = 512, max_nonlinear = 128, max_linear = 64;
+  int min_peer = 32, max_rsls = 256, max_ssls = 512;
+};
+
+std::string report(const std::vector<Outcome>& outcomes, const ByN& exact_at, const ByN& baseline_at, const Limits& l,
+                   const Peer& peer) {
   std::ostringstream md;
   exact_table(md, exact_at, baseline_at);
+  peers_table(md, outcomes, exact_at, peer);
   penalty_table(md, outcomes, exact_at, baseline_at);
   centre_limit(md, exact_at);
-  targets(md, exact_at, baseline_at, max_exact, max_baseline);
+  targets(md, exact_at, baseline_at, l.max_exact, l.max_baseline);
+  peer_target(md, outcomes, exact_at, l.max_rsls, l.max_ssls);
   return md.str();
 }
 }  // namespace
@@ -350,37 +425,46 @@ int main(int argc, char** argv) {
   plate::clean_up_on_interrupt("bench");
   CLI::App app{"bench: work-precision study of the exact-constraint solver and the penalty schemes (make bench)"};
   std::string out_dir = "results", paper_numbers = "reference/paper_numbers.csv";
-  int max_exact = 1024, max_baseline = 512, max_nonlinear = 128, max_linear = 64;
+  Limits l;
+  Peer peer{(std::filesystem::path(argv[0]).parent_path() / "peer_snesvi").string(), "reference"};
   app.add_option("--out", out_dir, "folder for speed_vs_error.csv and .md")->capture_default_str();
   app.add_option("--paper-numbers", paper_numbers, "published numbers (the obstacle)")->check(CLI::ExistingFile)->capture_default_str();
-  app.add_option("--max-exact", max_exact, "finest grid for the exact solver (a power of two >= 8)")
+  app.add_option("--max-exact", l.max_exact, "finest grid for the exact solver (a power of two >= 8)")
       ->check(CLI::IsMember({8, 16, 32, 64, 128, 256, 512, 1024, 2048}))
       ->capture_default_str();
-  app.add_option("--max-baseline", max_baseline, "finest grid for the unconstrained factorisation and solve")
+  app.add_option("--max-baseline", l.max_baseline, "finest grid for the unconstrained factorisation and solve")
       ->check(CLI::Range(8, 2048))
       ->capture_default_str();
-  app.add_option("--max-nonlinear", max_nonlinear, "finest grid for scheme (3a)")->check(CLI::Range(8, 2048))->capture_default_str();
-  app.add_option("--max-linear", max_linear, "finest grid for scheme (5a)")->check(CLI::Range(8, 2048))->capture_default_str();
+  app.add_option("--max-nonlinear", l.max_nonlinear, "finest grid for scheme (3a)")->check(CLI::Range(8, 2048))->capture_default_str();
+  app.add_option("--max-linear", l.max_linear, "finest grid for scheme (5a)")->check(CLI::Range(8, 2048))->capture_default_str();
+  app.add_option("--peer", peer.program, "the PETSc program (SNESVI)")->check(CLI::ExistingFile)->capture_default_str();
+  app.add_option("--min-peer", l.min_peer, "coarsest grid for the peers")->check(CLI::Range(8, 2048))->capture_default_str();
+  app.add_option("--max-rsls", l.max_rsls, "finest grid for SNESVI rsls (0: none)")->check(CLI::Range(0, 2048))->capture_default_str();
+  app.add_option("--max-ssls", l.max_ssls, "finest grid for SNESVI ssls (0: none)")->check(CLI::Range(0, 2048))->capture_default_str();
   app.footer(kExitStatusHelp);
   if (const int status = parse_options(app, argc, argv, "bench"); status >= 0) return status;
+  peer.reference = std::filesystem::path(paper_numbers).parent_path().string();
+  if (peer.reference.empty()) peer.reference = ".";
   try {
     const Field obstacle = paper_scene(read_paper_numbers(paper_numbers)).obstacle();
     const std::filesystem::path scratch = std::filesystem::temp_directory_path() / ("plate_bench_" + std::to_string(getpid()));
     std::filesystem::create_directories(scratch);
     std::vector<Job> jobs;
-    for (int n = 8; n <= max_exact; n *= 2) {
-      if (n <= max_baseline) jobs.push_back({"baseline", n, 0});
+    for (int n = 8; n <= l.max_exact; n *= 2) {
+      if (n <= l.max_baseline) jobs.push_back({"baseline", n, 0});
       jobs.push_back({"exact", n, 0});
+      if (n >= l.min_peer && n <= l.max_rsls) jobs.push_back({"snesvi-rsls", n, 0});
+      if (n >= l.min_peer && n <= l.max_ssls) jobs.push_back({"snesvi-ssls", n, 0});
       for (double tol : {1e-6, 1e-8})
-        if (n <= max_nonlinear) jobs.push_back({"nonlinear", n, tol});
-      if (n <= max_linear) jobs.push_back({"linear", n, 1e-6});
+        if (n <= l.max_nonlinear) jobs.push_back({"nonlinear", n, tol});
+      if (n <= l.max_linear) jobs.push_back({"linear", n, 1e-6});
     }
     std::vector<Outcome> outcomes;
     std::map<int, const Outcome*> exact_at, baseline_at;
     for (const Job& job : jobs) {
       std::cout << "bench: " << job.solver << " n = " << job.n << (job.tol > 0 ? " tol = " + fmt("%g", job.tol) : "")
                 << " ..." << std::flush;
-      outcomes.push_back(run_in_child(job, obstacle, scratch));
+      outcomes.push_back(run_in_child(job, obstacle, scratch, peer));
       const Outcome& o = outcomes.back();
       std::cout << (o.ok ? fmt(" %.3g s", o.v.at("seconds")) + fmt(", peak %.0f MiB", o.peak_mib) : " FAILED") << "\n";
     }
@@ -390,7 +474,7 @@ int main(int argc, char** argv) {
     std::filesystem::remove_all(scratch);
     std::filesystem::create_directories(out_dir);
     write_file_atomically(out_dir + "/speed_vs_error.csv", csv(outcomes, exact_at, baseline_at));
-    write_file_atomically(out_dir + "/speed_vs_error.md", report(outcomes, exact_at, baseline_at, max_exact, max_baseline));
+    write_file_atomically(out_dir + "/speed_vs_error.md", report(outcomes, exact_at, baseline_at, l, peer));
     std::cout << "bench: wrote " << out_dir << "/speed_vs_error.csv and .md\n";
     return kSuccess;
   } catch (const std::exception& e) {

@@ -1,0 +1,66 @@
+// The peer of `make bench`, PETSc's SNESVI, must solve the identical discrete problem: its answer,
+// judged by our certificate, must match our exact solver's node by node.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include "active_set.hpp"
+#include "paper_case.hpp"
+#include "run_program.hpp"
+
+using namespace plate;
+
+namespace {
+struct PeerAnswer {
+  std::map<std::string, double> v;
+  std::vector<double> nodal;
+};
+
+PeerAnswer run_peer(int n, const std::string& method) {
+  const std::string out = std::filesystem::temp_directory_path() / ("plate_peer_" + std::to_string(::getpid()) + method);
+  const Captured run = run_captured("'" BUILD_DIR "/peer_snesvi' -n " + std::to_string(n) + " --method " + method +
+                                    " --reference '" PLATE_SOURCE_DIR "/reference' --out '" + out + "' 2>&1");
+  EXPECT_EQ(run.status, 0) << run.output;
+  PeerAnswer a;
+  std::ifstream f(out);
+  for (std::string key; f >> key;) {
+    if (key == "nodal") {
+      size_t count = 0;
+      f >> count;
+      a.nodal.resize(count);
+      for (double& x : a.nodal) f >> x;
+      break;
+    }
+    f >> a.v[key];
+  }
+  std::filesystem::remove(out);
+  return a;
+}
+}  // namespace
+
+TEST(Peers, SnesviAndOurExactSolverAgreeOnTheDiscreteSolution) {
+  const int n = 32;
+  const PaperScene& s = paper_scene();
+  const Field no_load = [](double, double) { return 0.0; };
+  const ExactResult ours = solve_exact(make_grid(n), s.obstacle(), no_load, ExactOptions{});
+  ASSERT_TRUE(ours.converged);
+  const double scale = ours.w.cwiseAbs().maxCoeff();
+  for (const char* method : {"rsls", "ssls"}) {
+    const PeerAnswer a = run_peer(n, method);
+    ASSERT_EQ(a.nodal.size(), static_cast<size_t>(ours.w.size() / 4)) << method;
+    EXPECT_LE(a.v.at("certificate"), 1e-10) << method;
+    double diff = 0;
+    for (size_t q = 0; q < a.nodal.size(); ++q) diff = std::max(diff, std::abs(a.nodal[q] - ours.w[4 * q]));
+    std::printf("  SNESVI %s: %g Newton iterations, certificate %.1e, max nodal difference to ours %.1e\n", method,
+                a.v.at("iterations"), a.v.at("certificate"), diff);
+    EXPECT_LE(diff, 1e-10 * scale) << method;
+  }
+}
+
+TEST(Peers, TheSnesviProgramRefusesAnUnknownMethodByName) {
+  const Captured run = run_captured("'" BUILD_DIR "/peer_snesvi' -n 8 --method newton --out /dev/null 2>&1");
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("--method"), std::string::npos) << run.output;
+}
