@@ -307,7 +307,7 @@ void penalty_table(std::ostream& md, const std::vector<Outcome>& outcomes, const
 void peers_table(std::ostream& md, const std::vector<Outcome>& outcomes, const ByN& exact_at, const Peer& peer) {
   md << "\nPeers: PETSc's SNESVI (`" << peer.program << "`, PETSc 3.18) on the identical discrete problem (the same K, "
         "F and nodal bounds), reduced-space Newton (rsls: CHOLMOD Cholesky of K on the free set) and semismooth "
-        "Newton (ssls: UMFPACK LU of the scaled Jacobian), full projected Newton steps, started from max(phi, 0); "
+        "Newton (ssls: MUMPS LU of the scaled Jacobian), full projected Newton steps, started from max(phi, 0); "
         "each answer is judged by our certificate and compared with ours node by node:\n\n"
         "| n | solver | certified | Newton its | factorisations | s | ratio to ours | peak MiB | certificate | "
         "max nodal difference to ours |\n|---|---|---|---|---|---|---|---|---|---|\n";

@@ -125,16 +125,18 @@ int solve(const Options& o) {
   PC pc;
   KSPGetPC(ksp, &pc);
   // rsls factors K on the free set, which stays symmetric positive definite: CHOLMOD, as ours.
-  // ssls factors a row-scaled, unsymmetric K: UMFPACK LU, from the same SuiteSparse.
+  // ssls factors a row-scaled, unsymmetric K: MUMPS LU (UMFPACK, through PETSc's 32-bit interface,
+  // runs out of index space at n = 512).
   PCSetType(pc, o.method == "rsls" ? PCCHOLESKY : PCLU);
-  PCFactorSetMatSolverType(pc, o.method == "rsls" ? MATSOLVERCHOLMOD : MATSOLVERUMFPACK);
+  PCFactorSetMatSolverType(pc, o.method == "rsls" ? MATSOLVERCHOLMOD : MATSOLVERMUMPS);
   // Full projected Newton steps: on this quadratic problem they halve rsls's iterations against the
   // default backtracking (41 against 158 at n = 128) and spare ssls one. PETSC_OPTIONS may override.
   SNESLineSearch search;
   SNESGetLineSearch(snes, &search);
   SNESLineSearchSetType(search, SNESLINESEARCHBASIC);
   SNESSetFromOptions(snes);
-  SNESSolve(snes, nullptr, w);
+  if (SNESSolve(snes, nullptr, w) != 0)
+    throw std::runtime_error("PETSc's SNESSolve failed (its message is above)");
   v["seconds"] = seconds_since(t1);
   SNESConvergedReason reason;
   SNESGetConvergedReason(snes, &reason);
