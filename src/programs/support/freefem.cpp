@@ -3,6 +3,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
@@ -16,7 +17,12 @@
 namespace plate {
 
 namespace {
-std::string quote(const std::string& s) { return "'" + s + "'"; }
+// One shell word: in single quotes, each quote inside closed, escaped and reopened.
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
 
 std::string read_all(const std::string& path) {
   std::ifstream in(path);
@@ -25,11 +31,15 @@ std::string read_all(const std::string& path) {
   return text.str();
 }
 
-void run(const std::string& what, const std::string& cmd, const std::string& log) {
+// Runs cmd, its output in log; throws, quoting the log, unless it exits with one of `accepted`.
+int run(const std::string& what, const std::string& cmd, const std::string& log, std::vector<int> accepted = {0}) {
   const int raw = std::system((cmd + " > " + quote(log) + " 2>&1").c_str());
-  const int status = (raw != -1 && WIFEXITED(raw)) ? WEXITSTATUS(raw) : -1;
-  if (status != 0)
+  if (raw == -1 || !WIFEXITED(raw))
+    throw std::runtime_error(what + " did not run to its end (killed by a signal?): " + cmd + "\n" + read_all(log));
+  const int status = WEXITSTATUS(raw);
+  if (std::find(accepted.begin(), accepted.end(), status) == accepted.end())
     throw std::runtime_error(what + " failed (exit " + std::to_string(status) + "): " + cmd + "\n" + read_all(log));
+  return status;
 }
 }  // namespace
 
@@ -56,8 +66,10 @@ nlohmann::json run_freefem(const std::string& edp, const std::string& msh, const
   // Debian's FreeFem++ looks for its plugins in the wrong folder unless told.
   setenv("FF_LOADPATH", "/usr/lib/freefem++", 0);
   std::remove(out_json.c_str());
+  // Exit 3: the active set did not settle; the JSON says so ("converged": false), and the run
+  // is reported as not certified rather than ending the whole check.
   run("FreeFem++", "FreeFem++ -nw -v 0 " + quote(edp) + " -mesh " + quote(msh) + " " + args + " -out " + quote(out_json),
-      out_json + ".log");
+      out_json + ".log", {0, 3});
   const std::string text = read_all(out_json);
   if (text.empty()) throw std::runtime_error("FreeFem++ wrote no output to " + out_json);
   try {
@@ -72,7 +84,7 @@ double freefem_roundoff(double h, double v) { return 30 * DBL_EPSILON * std::abs
 CheckValues freefem_values(const nlohmann::json& j, int cells, double radius) {
   try {
     CheckValues v;
-    v.code = "freefem-hct";
+    v.code = kFreefemCode;
     v.grid = std::to_string(cells) + " cells per quarter circle (" + std::to_string(j.at("triangles").get<int>()) + " triangles)";
     v.cells = cells;
     v.h = j.at("hmax").get<double>();

@@ -11,6 +11,9 @@
 
 namespace plate {
 
+// The code name FreeFEM's rows carry in CheckValues and the CSV.
+inline constexpr const char* kFreefemCode = "freefem-hct";
+
 // gmsh: mesh the .geo, its parameters set by `numbers` (name, value), into an MSH 2 file. Throws
 // std::runtime_error on failure.
 void gmsh_mesh(const std::string& geo, const std::vector<std::pair<std::string, double>>& numbers,
@@ -20,7 +23,8 @@ void gmsh_mesh(const std::string& geo, const std::vector<std::pair<std::string, 
 void write_points(const std::string& path, const std::vector<std::pair<double, double>>& points);
 
 // FreeFEM: run the .edp on a mesh with extra "-name value" arguments, its JSON written to out_json
-// and parsed. Throws std::runtime_error if FreeFem++ fails, exits with an error or writes no JSON.
+// and parsed. Throws std::runtime_error if FreeFem++ fails, exits with an error other than 3 (not
+// settled: the JSON says "converged": false) or writes no JSON.
 nlohmann::json run_freefem(const std::string& edp, const std::string& msh, const std::string& args,
                            const std::string& out_json);
 
