@@ -4,7 +4,7 @@
 # solver and sampling (n = 8, 16, ...; FreeFEM: 4, 8, ... cells per quarter circle).
 # Filled points: certified runs (exit 0); open points: runs that exit 3.
 # Usage: gnuplot -e "fmt='svg'; out='results/time_to_accuracy.svg'" paper/figures/time_to_accuracy.gp
-if (fmt eq 'svg') { set terminal svg size 1000,450 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 1000,450 font 'Helvetica,11' }
+if (fmt eq 'svg') { set terminal svg size 1000,560 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 1000,560 font 'Helvetica,11' }
 set output out
 set datafile separator ','
 set logscale xy
@@ -13,12 +13,14 @@ set format x '10^{%L}'
 set xlabel 'wall time of the whole process (s)'
 set ylabel 'relative error against the limit'
 set grid
-set key bottom left box opaque font ',10'
+set key outside below horizontal maxrows 3 box font ',10'
+# Nine lines: the ninth (FreeFEM) needs a colour of its own, the default list has eight.
+set linetype 9 lc rgb '#8c564b' pt 5
 data = 'results/time_to_accuracy.csv'
 stats data using 2 nooutput
 blocks = STATS_blocks
 # The configurations of src/programs/time_to_accuracy.cpp, in its order (the CSV has one block each).
-array names[9] = ["exact edge (default)", "exact nodes", "exact Gauss", "(3a) edge", "(3a) Gauss (paper)", "(5a) Gauss (paper)", "SNESVI rsls nodes", "SNESVI ssls nodes", "FreeFEM HCT, vertices"]
+array names[9] = ["exact edge (default)", "exact nodes", "exact Gauss", "(3a) edge", "(3a) Gauss (paper)", "(5a) Gauss (paper)", "SNESVI rsls nodes", "SNESVI ssls nodes", "FreeFEM HCT vertices"]
 ok(col) = (column(3) == 0 && column(col) > 0) ? column(col) : NaN
 bad(col) = (column(3) != 0 && column(col) > 0) ? column(col) : NaN
 set multiplot layout 1,2
