@@ -40,14 +40,11 @@ std::vector<CheckValues> freefem_runs(const std::string& geo, const std::vector<
   std::vector<CheckValues> runs;
   for (int n : levels) {
     const std::string msh = dir + "/" + std::filesystem::path(geo).stem().string() + std::to_string(n) + ".msh";
-    std::vector<std::pair<std::string, double>> numbers = {{"n", n}, {"cx", s.cx}, {"cy", s.cy}, {"r", s.radius}};
+    auto numbers = circle_numbers(s, n);
     if (disk_radius > 0) numbers.push_back({"a", disk_radius});
     gmsh_mesh(kRef + "/" + geo, numbers, msh);
-    std::ostringstream args;
-    args.precision(17);
-    args << "-points '" << pts << "' -R " << s.height << " -cx " << s.cx << " -cy " << s.cy << " -r " << s.radius << " "
-         << extra;
-    runs.push_back(freefem_values(run_freefem(kEdp, msh, args.str(), msh + ".json"), 4 * n, s.radius));
+    const std::string args = scene_args(s, pts) + " " + extra;
+    runs.push_back(freefem_values(run_freefem(kEdp, msh, args, msh + ".json"), 4 * n, s.radius));
     EXPECT_TRUE(runs.back().certified) << geo << ", n = " << n;
   }
   return runs;

@@ -7,34 +7,19 @@
 #include <map>
 
 #include "active_set.hpp"
+#include "measurements.hpp"
 #include "paper_case.hpp"
 #include "run_program.hpp"
 
 using namespace plate;
 
 namespace {
-struct PeerAnswer {
-  std::map<std::string, double> v;
-  std::vector<double> nodal;
-};
-
-PeerAnswer run_peer(int n, const std::string& method) {
+Measurements run_peer(int n, const std::string& method) {
   const std::string out = std::filesystem::temp_directory_path() / ("plate_peer_" + std::to_string(::getpid()) + method);
   const Captured run = run_captured("'" BUILD_DIR "/peer_snesvi' -n " + std::to_string(n) + " --method " + method +
                                     " --reference '" PLATE_SOURCE_DIR "/reference' --out '" + out + "' 2>&1");
   EXPECT_EQ(run.status, 0) << run.output;
-  PeerAnswer a;
-  std::ifstream f(out);
-  for (std::string key; f >> key;) {
-    if (key == "nodal") {
-      size_t count = 0;
-      f >> count;
-      a.nodal.resize(count);
-      for (double& x : a.nodal) f >> x;
-      break;
-    }
-    f >> a.v[key];
-  }
+  const Measurements a = read_measurements(out);
   std::filesystem::remove(out);
   return a;
 }
@@ -48,7 +33,7 @@ TEST(Peers, SnesviAndOurExactSolverAgreeOnTheDiscreteSolution) {
   ASSERT_TRUE(ours.converged);
   const double scale = ours.w.cwiseAbs().maxCoeff();
   for (const char* method : {"rsls", "ssls"}) {
-    const PeerAnswer a = run_peer(n, method);
+    const Measurements a = run_peer(n, method);
     ASSERT_EQ(a.nodal.size(), static_cast<size_t>(ours.w.size() / 4)) << method;
     EXPECT_LE(a.v.at("certificate"), 1e-10) << method;
     double diff = 0;

@@ -21,6 +21,7 @@
 #include "contact.hpp"
 #include "fields.hpp"
 #include "format.hpp"
+#include "measurements.hpp"
 #include "published.hpp"
 #include "schemes.hpp"
 #include "stopwatch.hpp"
@@ -123,14 +124,10 @@ Outcome run_in_child(const Job& job, const Field& obstacle, const std::filesyste
   if (pid == 0) {
     int status = kFailure;
     try {
-      std::vector<double> nodal;
-      const auto v = run_job(job, obstacle, nodal);
-      std::ofstream f(file);
-      f.precision(17);
-      for (const auto& [k, x] : v) f << k << ' ' << x << '\n';
-      f << "nodal " << nodal.size() << '\n';
-      for (double x : nodal) f << x << '\n';
-      status = f ? kSuccess : kFailure;
+      Measurements m;
+      m.v = run_job(job, obstacle, m.nodal);
+      write_measurements(file, m);
+      status = kSuccess;
     } catch (const std::exception& e) {
       std::cerr << "bench: " << job.solver << " n = " << job.n << ": " << e.what() << "\n";
     }
@@ -143,18 +140,9 @@ Outcome run_in_child(const Job& job, const Field& obstacle, const std::filesyste
   // A peer that ran to the end but did not converge (exit 3) still reports what it reached.
   const bool reported = WIFEXITED(status) && (WEXITSTATUS(status) == 0 || (is_peer(job) && WEXITSTATUS(status) == kNotConverged));
   if (!reported) return out;
-  std::ifstream f(file);
-  std::string key;
-  while (f >> key) {
-    if (key == "nodal") {
-      size_t count;
-      f >> count;
-      out.nodal.resize(count);
-      for (double& x : out.nodal) f >> x;
-      break;
-    }
-    f >> out.v[key];
-  }
+  Measurements m = read_measurements(file);
+  out.v = std::move(m.v);
+  out.nodal = std::move(m.nodal);
   std::filesystem::remove(file);
   out.ok = true;
   return out;

@@ -88,25 +88,24 @@ std::vector<std::pair<double, double>> square_points() {
 }
 
 // FreeFEM on each mesh of one .geo: the contact problem, and (if asked) the same plate under f = 1.
+// FreeFEM on each mesh of one .geo (`extra`: its numbers beyond the circle's): the contact problem,
+// and (if asked) the same plate under f = 1.
 std::vector<CheckValues> run_freefem_levels(const Setup& u, const std::string& geo, const std::string& name,
                                             const std::vector<int>& levels, const std::string& points,
-                                            std::vector<std::pair<std::string, double>> geometry,
+                                            const std::vector<std::pair<std::string, double>>& extra,
                                             std::vector<double>* uniform) {
   const PaperScene& s = u.scene;
-  std::ostringstream args;
-  args.precision(17);
-  args << "-points '" << points << "' -R " << s.height << " -cx " << s.cx << " -cy " << s.cy << " -r " << s.radius;
+  const std::string args = scene_args(s, points);
   std::vector<CheckValues> runs;
   for (int n : levels) {
     const std::string msh = u.work + "/" + name + "_n" + std::to_string(n) + ".msh";
-    geometry.push_back({"n", n});
-    gmsh_mesh(geo, geometry, msh);
-    geometry.pop_back();
+    auto numbers = circle_numbers(s, n);
+    numbers.insert(numbers.end(), extra.begin(), extra.end());
+    gmsh_mesh(geo, numbers, msh);
     std::cerr << "crosscheck: FreeFEM, " << name << ", " << 4 * n << " cells per quarter circle\n";
-    runs.push_back(freefem_values(run_freefem(u.edp, msh, args.str(), msh + ".json"), 4 * n, s.radius));
+    runs.push_back(freefem_values(run_freefem(u.edp, msh, args, msh + ".json"), 4 * n, s.radius));
     if (uniform)
-      uniform->push_back(run_freefem(u.edp, msh, "-points '" + points + "' -obstacle none -load 1", msh + ".uniform.json")
-                             .at("max_w").get<double>());
+      uniform->push_back(run_freefem(u.edp, msh, args + " -obstacle none -load 1", msh + ".uniform.json").at("max_w").get<double>());
   }
   return runs;
 }
@@ -117,11 +116,8 @@ Runs run_all(const Setup& u) {
   const std::string square_points_file = u.work + "/square_points.txt", disk_points_file = u.work + "/disk_points.txt";
   write_points(square_points_file, square_points());
   write_points(disk_points_file, {{s.cx, s.cy}});
-  const std::vector<std::pair<std::string, double>> circle = {{"cx", s.cx}, {"cy", s.cy}, {"r", s.radius}};
-  auto disk = circle;
-  disk.push_back({"a", u.disk.a});
-  r.ff = run_freefem_levels(u, u.square_geo, "square", u.ff_levels, square_points_file, circle, &r.ff_uniform);
-  r.disk = run_freefem_levels(u, u.disk_geo, "disk", u.disk_levels, disk_points_file, disk, nullptr);
+  r.ff = run_freefem_levels(u, u.square_geo, "square", u.ff_levels, square_points_file, {}, &r.ff_uniform);
+  r.disk = run_freefem_levels(u, u.disk_geo, "disk", u.disk_levels, disk_points_file, {{"a", u.disk.a}}, nullptr);
   const Field phi = s.obstacle();
   for (int n : u.edge_ns) {
     std::cerr << "crosscheck: this code, edge sampling, n = " << n << "\n";

@@ -7,7 +7,6 @@
 #include <CLI/CLI.hpp>
 #include <petscsnes.h>
 
-#include <fstream>
 #include <iostream>
 #include <vector>
 
@@ -15,6 +14,7 @@
 #include "contact.hpp"
 #include "exit_codes.hpp"
 #include "fields.hpp"
+#include "measurements.hpp"
 #include "norms.hpp"
 #include "published.hpp"
 #include "stopwatch.hpp"
@@ -69,17 +69,16 @@ struct Context {
   const Problem* problem = nullptr;
   double tol = 1e-10;  // our certificate's: every entry <= tol
   int max_it = 200;
-  int jacobians = 0;  // calls for the Jacobian: one new factorisation each
   std::vector<double> history;  // the certificate after each iteration
 };
 
-// Our certificate for w, with the multipliers read off the residual at the sampled values.
-Certificate certificate_of(const Problem& p, const VectorXd& w) {
+// The multipliers of w, read off the residual at the sampled values (row q is node q's value).
+VectorXd multipliers(const Problem& p, const VectorXd& w) {
   const VectorXd res = p.K * w - p.F;
   VectorXd lambda(p.sampling.size());
   for (int q = 0; q < p.sampling.size(); ++q)
     lambda[q] = std::isfinite(p.phi[q]) ? res[4 * q] / p.sampling.weights[q] : 0.0;  // no bound, no force
-  return certify(p, w, lambda);
+  return lambda;
 }
 
 // The residual of K w = F: SNESVI drives it to zero where w is off its bounds.
@@ -99,7 +98,8 @@ PetscErrorCode certified(SNES snes, PetscInt it, PetscReal, PetscReal, PetscReal
   Context* c = static_cast<Context*>(ctx);
   Vec w;
   SNESGetSolution(snes, &w);
-  const double worst = certificate_of(*c->problem, eigen_vector(w)).worst();
+  const VectorXd x = eigen_vector(w);
+  const double worst = certify(*c->problem, x, multipliers(*c->problem, x)).worst();
   c->history.push_back(worst);
   const size_t k = c->history.size();
   *reason = SNES_CONVERGED_ITERATING;
@@ -113,9 +113,7 @@ PetscErrorCode certified(SNES snes, PetscInt it, PetscReal, PetscReal, PetscReal
 // The problem is quadratic: the Jacobian is K. It is copied afresh on each call because ssls scales
 // its Jacobian in place (D_a + D_b J); handing it K itself would change the residual too.
 PetscErrorCode jacobian(SNES, Vec, Mat J, Mat, void* ctx) {
-  Context* c = static_cast<Context*>(ctx);
-  ++c->jacobians;
-  return MatCopy(c->K, J, SAME_NONZERO_PATTERN);
+  return MatCopy(static_cast<const Context*>(ctx)->K, J, SAME_NONZERO_PATTERN);
 }
 
 struct Options {
@@ -128,7 +126,8 @@ struct Options {
 int solve(const Options& o) {
   const PaperScene scene = read_paper_scene(o.reference);
   const Field phi = scene.obstacle(), no_load = [](double, double) { return 0.0; };
-  std::map<std::string, double> v;
+  Measurements m;
+  std::map<std::string, double>& v = m.v;
   const auto t0 = Clock::now();
   const Problem p = make_problem(make_grid(o.n), SamplingKind::Nodes, phi, no_load);
   const int N = p.grid.unknowns();
@@ -136,7 +135,7 @@ int solve(const Options& o) {
   VectorXd lower = VectorXd::Constant(N, PETSC_NINFINITY), upper = VectorXd::Constant(N, PETSC_INFINITY);
   for (int q = 0; q < p.sampling.size(); ++q)
     if (std::isfinite(p.phi[q])) lower[4 * q] = p.phi[q];
-  Context c{petsc_matrix(p.K), petsc_vector(p.F), &p, o.tol, o.max_it};
+  Context c{petsc_matrix(p.K), petsc_vector(p.F), &p, o.tol, o.max_it, {}};
   Mat J;
   MatDuplicate(c.K, MAT_COPY_VALUES, &J);
   Vec w = petsc_vector(lower.cwiseMax(0.0)), lo = petsc_vector(lower), hi = petsc_vector(upper), r;
@@ -181,10 +180,7 @@ int solve(const Options& o) {
   v["factorizations"] = linear;
   v["reason"] = reason;
 
-  const VectorXd x = eigen_vector(w), res = p.K * x - p.F;
-  VectorXd lambda(p.sampling.size());
-  for (int q = 0; q < p.sampling.size(); ++q)
-    lambda[q] = std::isfinite(p.phi[q]) ? res[4 * q] / p.sampling.weights[q] : 0.0;
+  const VectorXd x = eigen_vector(w), lambda = multipliers(p, x);
   const Certificate cert = certify(p, x, lambda);
   v["certificate"] = cert.worst();
   v["certificate_violation"] = cert.violation;
@@ -196,12 +192,8 @@ int solve(const Options& o) {
   v["max_w"] = max_nodal_abs(x);
   v["total_force"] = p.sampling.weights.dot(lambda);
 
-  std::ofstream f(o.out);
-  f.precision(17);
-  for (const auto& [k, value] : v) f << k << ' ' << value << '\n';
-  f << "nodal " << N / 4 << '\n';
-  for (int q = 0; q < N / 4; ++q) f << x[4 * q] << '\n';
-  if (!f.flush()) throw std::runtime_error("cannot write " + o.out);
+  for (int q = 0; q < N / 4; ++q) m.nodal.push_back(x[4 * q]);
+  write_measurements(o.out, m);
   if (v["converged"] == 0)
     std::cerr << "peer_snesvi: " << o.method << " n = " << o.n << ": not converged (reason " << reason
               << ", certificate " << cert.worst() << ")\n";

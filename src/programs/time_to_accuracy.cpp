@@ -20,6 +20,7 @@
 #include "exit_codes.hpp"
 #include "format.hpp"
 #include "freefem.hpp"
+#include "measurements.hpp"
 #include "published.hpp"
 #include "stopwatch.hpp"
 
@@ -75,16 +76,12 @@ Run run_plate(const std::string& plate, const std::string& peer, const Config& c
   r.seconds = seconds_since(t0);
   r.peak_mib = ru.ru_maxrss / 1024.0;
   r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream f(json);
   if (!c.peer_method.empty()) {
-    for (std::string key; f >> key && key != "nodal";) {
-      double x;
-      f >> x;
-      if (key == "max_w") r.max_w = x;
-      if (key == "total_force") r.force = x;
-    }
+    const Measurements m = read_measurements(json);
+    if (m.v.count("max_w") && m.v.count("total_force")) r.max_w = m.v.at("max_w"), r.force = m.v.at("total_force");
     return r;
   }
+  std::ifstream f(json);
   const nlohmann::json j = nlohmann::json::parse(f, nullptr, false);  // none or malformed: the run failed
   auto number = [&](const char* key) {
     return !j.is_discarded() && j.contains(key) && j[key].is_number() ? j[key].get<double>() : NAN;
@@ -100,13 +97,9 @@ Run run_freefem_level(const FreeFem& ff, const Config& c, int n) {
   r.n = n;
   const std::string msh = ff.work + "/tta_n" + std::to_string(n) + ".msh", points = ff.work + "/tta_points.txt";
   write_points(points, {{ff.scene.cx, ff.scene.cy}});
-  std::ostringstream args;
-  args.precision(17);
-  args << "-points " << points << " -R " << ff.scene.height << " -cx " << ff.scene.cx << " -cy " << ff.scene.cy << " -r "
-       << ff.scene.radius;
   const auto t0 = Clock::now();
-  gmsh_mesh(ff.geo, {{"n", n}, {"cx", ff.scene.cx}, {"cy", ff.scene.cy}, {"r", ff.scene.radius}}, msh);
-  const nlohmann::json j = run_freefem(ff.edp, msh, args.str(), msh + ".json");
+  gmsh_mesh(ff.geo, circle_numbers(ff.scene, n), msh);
+  const nlohmann::json j = run_freefem(ff.edp, msh, scene_args(ff.scene, points), msh + ".json");
   r.seconds = seconds_since(t0);
   r.peak_mib = NAN;  // gmsh and FreeFem++ run through system(): their peak is not this process's to read
   r.status = j.at("converged").get<bool>() ? 0 : kNotConverged;
@@ -247,15 +240,15 @@ int main(int argc, char** argv) {
     const auto lim = read_limits(limits);
     const std::vector<Config> configs = {
         // The names are the figure's key (paper/figures/time_to_accuracy.gp lists the blocks in this order).
-        {"exact edge (default)", "", 512},
-        {"exact nodes", "--sampling nodes", 512},
-        {"exact Gauss", "--sampling gauss", 256},
-        {"(3a) edge", "--scheme nonlinear", 128},
-        {"(3a) Gauss (paper)", "--scheme nonlinear --sampling gauss", 128},
-        {"(5a) Gauss (paper)", "--scheme linear --sampling gauss", 32},
+        {"exact edge (default)", "", 512, false, ""},
+        {"exact nodes", "--sampling nodes", 512, false, ""},
+        {"exact Gauss", "--sampling gauss", 256, false, ""},
+        {"(3a) edge", "--scheme nonlinear", 128, false, ""},
+        {"(3a) Gauss (paper)", "--scheme nonlinear --sampling gauss", 128, false, ""},
+        {"(5a) Gauss (paper)", "--scheme linear --sampling gauss", 32, false, ""},
         {"SNESVI rsls nodes", "", 128, false, "rsls"},
         {"SNESVI ssls nodes", "", 256, false, "ssls"},
-        {"FreeFEM HCT vertices", "", max_freefem, true},  // no comma: the name is a CSV field
+        {"FreeFEM HCT vertices", "", max_freefem, true, ""},  // no comma: the name is a CSV field
     };
     ff.scene = read_paper_scene(reference);
     std::filesystem::create_directories(ff.work);

@@ -53,6 +53,18 @@ void gmsh_mesh(const std::string& geo, const std::vector<std::pair<std::string, 
   run("gmsh", cmd.str(), msh + ".log");
 }
 
+std::string scene_args(const PaperScene& scene, const std::string& points_file) {
+  std::ostringstream args;
+  args.precision(17);
+  args << "-points " << quote(points_file) << " -R " << scene.height << " -cx " << scene.cx << " -cy " << scene.cy
+       << " -r " << scene.radius;
+  return args.str();
+}
+
+std::vector<std::pair<std::string, double>> circle_numbers(const PaperScene& scene, int n) {
+  return {{"n", n}, {"cx", scene.cx}, {"cy", scene.cy}, {"r", scene.radius}};
+}
+
 void write_points(const std::string& path, const std::vector<std::pair<double, double>>& points) {
   std::ofstream out(path);
   out.precision(17);
