@@ -316,24 +316,37 @@ void peers_table(std::ostream& md, const std::vector<Outcome>& outcomes, const B
   }
 }
 
-// Target: at n = 512, at least 3 times faster than the faster SNESVI variant that ran there.
+// Target: at n = 512, at least 3 times faster than the faster SNESVI variant that ran there. A
+// certified run is preferred; when none is, the faster uncertified one is reported as such, with how
+// far its certificate and its answer are from ours, so the target is never silently "not measured".
 void peer_target(std::ostream& md, const std::vector<Outcome>& outcomes, const ByN& exact_at, int max_rsls, int max_ssls) {
   const auto e = exact_at.find(512);
   const Outcome* fastest = nullptr;
-  for (const Outcome& r : outcomes)
-    if (is_peer(r.job) && r.job.n == 512 && r.ok && r.v.at("converged") != 0 &&
-        (!fastest || r.v.at("seconds") < fastest->v.at("seconds")))
-      fastest = &r;
+  for (const bool want_certified : {true, false}) {
+    for (const Outcome& r : outcomes)
+      if (is_peer(r.job) && r.job.n == 512 && r.ok && (!want_certified || r.v.at("converged") != 0) &&
+          (!fastest || r.v.at("seconds") < fastest->v.at("seconds")))
+        fastest = &r;
+    if (fastest) break;
+  }
   md << "- n = 512 against PETSc's SNESVI: ";
   if (e == exact_at.end() || !fastest) {
-    md << "not measured (no certified run of both at n = 512; rsls runs to n = " << max_rsls << ", ssls to n = "
-       << max_ssls << ").\n";
+    md << "not measured (no run of both at n = 512; rsls runs to n = " << max_rsls << ", ssls to n = " << max_ssls
+       << ").\n";
     return;
   }
   const double ratio = fastest->v.at("seconds") / e->second->v.at("seconds");
-  md << "ours " << fmt("%.3g", e->second->v.at("seconds")) << " s, the faster variant run there (" << fastest->job.solver.substr(7)
-     << ") " << fmt("%.3g", fastest->v.at("seconds")) << " s: " << fmt("%.1f", ratio) << " times faster (target >= 3: "
-     << met(ratio >= 3) << ")";
+  const bool certified = fastest->v.at("converged") != 0;
+  md << "ours " << fmt("%.3g", e->second->v.at("seconds")) << " s, the faster variant run there ("
+     << fastest->job.solver.substr(7) << ") " << fmt("%.3g", fastest->v.at("seconds")) << " s: " << fmt("%.1f", ratio)
+     << " times faster (target >= 3: " << met(ratio >= 3) << ")";
+  if (!certified)
+    md << ", measured on an uncertified run: " << fastest->job.solver.substr(7) << " stopped with certificate "
+       << fmt("%.1e", fastest->v.at("certificate")) << " (ours " << fmt("%.1e", e->second->v.at("certificate"))
+       << "), because its certificate no longer halved, and its nodal values differ from ours by at most "
+       << fmt("%.1e", max_diff(fastest->nodal, e->second->nodal))
+       << "; its certificate grows with n in the table above, as round-off in the multipliers it reads off the "
+          "residual would";
   if (max_rsls < 512)
     md << "; rsls is run only to n = " << max_rsls << ", because its Newton iterations grow with n (see the table) and "
           "each factorises K on the free set afresh, so at n = 512 it would take far longer than ssls";
