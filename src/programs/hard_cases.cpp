@@ -1,5 +1,7 @@
-// hard_cases: writes results/hard_cases.md, the cases the paper did not try and every kind of bad
-// input, each with what it gets: a certified answer, or a failure that says why.
+// hard_cases: writes results/hard_cases.md, the cases the paper did not try, and
+// results/hard_cases_input.md, every kind of bad input; each with what it gets: a certified answer,
+// or a failure that says why. Run times go to results/hard_cases_timings.csv, so that the two
+// reports rebuild byte for byte.
 // `hard_cases --help` lists the options.
 #include <CLI/CLI.hpp>
 
@@ -33,6 +35,8 @@ struct Context {
   PaperScene scene;
   std::string plate, cases, scratch;
   int fine = 512;
+  std::ostringstream* timings = nullptr;  // case,n,run,seconds
+  std::ostringstream* point_rows = nullptr;  // the point obstacle's rows, for the document's prose
 };
 
 std::string yes_no(bool b) { return b ? "yes" : "**no**"; }
@@ -50,6 +54,7 @@ void eps_sweep(std::ostream& md, const Problem& p, const VectorXd& reference, co
                double tol, int cap, double lambda1) {
   md << "| scheme | eps | certified | iterations | predicted (5a) | factorisations | error bound | round-off floor"
         " | violation | error vs " << reference_name << " | why not |\n|---|---:|:---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
+  std::string smallest;  // said after the table, which a line between rows would cut in two
   for (Scheme s : {Scheme::Nonlinear, Scheme::Linear}) {
     double smallest_certified = 0;
     for (int e = 2; e <= 14; ++e) {
@@ -64,9 +69,11 @@ void eps_sweep(std::ostream& md, const Problem& p, const VectorXd& reference, co
          << fmt("%.1e", r.bound.bound) << " | " << fmt("%.1e", r.bound.roundoff) << " | " << fmt("%.1e", r.violation)
          << " | " << fmt("%.1e", r.error) << " | " << why_not(r) << " |\n";
     }
-    md << "\n" << (s == Scheme::Linear ? "(5a)" : "(3a)") << ": smallest certified eps "
-       << (smallest_certified > 0 ? fmt("%.0e", smallest_certified) : std::string("none")) << ".\n\n";
+    smallest += std::string(smallest.empty() ? "Smallest certified eps: " : ", ") +
+                (s == Scheme::Linear ? "(5a) " : "(3a) ") +
+                (smallest_certified > 0 ? fmt("%.0e", smallest_certified) : std::string("none"));
   }
+  md << "\n" << smallest << ".\n\n";
 }
 
 std::string table_cell(std::string s) {
@@ -138,6 +145,8 @@ void point_obstacle(std::ostream& md, const Context& c) {
     const double P = p.sampling.weights.dot(r.lambda);
     md << "| " << n << " | " << members(r.active) << " | " << fmt("%.4f", P) << " | " << fmt("%.7f", 0.01 / P) << " | "
        << fmt("%+.2e", (0.01 / P - c.point) / c.point) << (r.converged ? "" : " (not converged)") << " |\n";
+    *c.point_rows << n << ',' << members(r.active) << ',' << fmt("%.4f", P) << ',' << fmt("%.7f", 0.01 / P) << ','
+             << fmt("%+.2e", (0.01 / P - c.point) / c.point) << ',' << (r.converged ? 1 : 0) << '\n';
   }
 }
 
@@ -153,8 +162,9 @@ void flat_support(std::ostream& md, const Context& c) {
   }
   md << "\nR = 5e-4, grid-sequenced (the default: each grid starts from the contact set of the one twice as coarse) "
         "and, up to n = 128, from an empty set:\n\n| n | touching nodes | ratio to the coarser grid | force density at "
-        "the centre | total force | PDAS its | factorisations | s | cold start: PDAS its | cold start: s |\n"
-        "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+        "the centre | total force | PDAS its | factorisations | cold start: PDAS its |\n"
+        "|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  std::string cold_its, cold_ns;
   int previous = 0;
   for (int n : {32, 64, 128, 256}) {
     const Grid g = make_grid(n);
@@ -167,21 +177,24 @@ void flat_support(std::ostream& md, const Context& c) {
     md << "| " << n << " | " << members(r.active) << " | "
        << (previous ? fmt("%.2f", double(members(r.active)) / previous) : std::string("")) << " | "
        << fmt("%.5f", r.lambda[g.node(n / 2, n / 2)]) << " | " << fmt("%.5f", p.sampling.weights.dot(r.lambda))
-       << " | " << l.pdas_iterations << " | " << l.factorizations << " | " << fmt("%.2f", s)
-       << (r.converged ? "" : " (not converged)") << " | ";
+       << " | " << l.pdas_iterations << " | " << l.factorizations << (r.converged ? "" : " (not converged)") << " | ";
+    *c.timings << "flat support," << n << ",grid-sequenced," << fmt("%.3g", s) << "\n";
     if (n <= 128) {
       t0 = Clock::now();
       const ExactResult cold = solve_exact(p, ExactOptions{});
-      md << cold.levels.back().pdas_iterations << " | " << fmt("%.2f", seconds_since(t0)) << " |\n";
+      *c.timings << "flat support," << n << ",cold start," << fmt("%.3g", seconds_since(t0)) << "\n";
+      md << cold.levels.back().pdas_iterations << " |\n";
+      cold_its += (cold_its.empty() ? "" : ", ") + std::to_string(cold.levels.back().pdas_iterations);
+      cold_ns += (cold_ns.empty() ? "" : ", ") + std::to_string(n);
     } else {
-      md << " | |\n";
+      md << " |\n";
     }
     previous = members(r.active);
   }
-  md << "\nThe number of touching nodes grows about 4 times per halving of h, as an area does (a curve would give "
-        "2), and the force density at the centre tends to q. From an empty set the primal-dual iteration needs "
-        "about n/2 iterations here, most with their own factorisation, so its cost grows like n times a "
-        "factorisation; started from the coarser grid's contact set it needs a handful.\n\n";
+  md << "\nPer halving of h the touching nodes of an area grow 4 times, those of a curve 2: compare the ratio column. "
+        "The force density at the centre is to be compared with q = 1. From an empty set the primal-dual iteration needs "
+     << cold_its << " iterations on n = " << cold_ns << ", most with their own factorisation; started from the coarser grid's contact set "
+        "it needs the PDAS its above (run times in hard_cases_timings.csv).\n\n";
 }
 
 // Sixteen bumps: many contact regions, the exact solver against (3a).
@@ -221,8 +234,8 @@ void just_touching_obstacle(std::ostream& md, const Context&) {
 // The paper's problem at n = fine: the exact solver and both schemes, and (5a)'s rate.
 void million_unknowns(std::ostream& md, const Context& c) {
   md << "### A million unknowns (n = " << c.fine << ")\n\nThe paper's problem, nodal sampling.\n\n"
-        "| solver | settings | certified | iterations | factorisations | s | error bound or certificate | "
-        "vs exact |\n|---|---|:---:|---:|---:|---:|---:|---:|\n";
+        "| solver | settings | certified | iterations | factorisations | error bound or certificate | "
+        "vs exact |\n|---|---|:---:|---:|---:|---:|---:|\n";
   const Problem p = make_problem(make_grid(c.fine), SamplingKind::Nodes, c.scene.obstacle(), uniform(0));
   std::cerr << "hard_cases: n = " << c.fine << ", exact\n";
   const auto t0 = Clock::now();
@@ -231,7 +244,8 @@ void million_unknowns(std::ostream& md, const Context& c) {
   int exact_f = 0;
   for (const auto& l : exact.levels) exact_f += l.factorizations;
   md << "| exact | tol 1e-10 | " << yes_no(exact.converged) << " | " << exact.levels.back().pdas_iterations << " | "
-     << exact_f << " | " << fmt("%.1f", s_exact) << " | " << fmt("%.1e", exact.certificate.worst()) << " | |\n";
+     << exact_f << " | " << fmt("%.1e", exact.certificate.worst()) << " | |\n";
+  *c.timings << "million unknowns," << c.fine << ",exact," << fmt("%.3g", s_exact) << "\n";
   std::vector<double> linear_steps;  // (5a)'s steps in the norm of Theorem 2
   for (auto [s, eps, tol] : {std::tuple{Scheme::Nonlinear, 1e-7, 1e-6}, std::tuple{Scheme::Linear, 1e-4, 1e-6}}) {
     std::cerr << "hard_cases: n = " << c.fine << ", " << to_string(s) << "\n";
@@ -239,8 +253,8 @@ void million_unknowns(std::ostream& md, const Context& c) {
     if (s == Scheme::Linear) linear_steps = r.steps;
     md << "| " << (s == Scheme::Linear ? "(5a)" : "(3a)") << " | eps " << fmt("%.0e", eps) << ", tol "
        << fmt("%.0e", tol) << " | " << yes_no(r.converged) << " | " << r.iterations << " | " << r.factorizations
-       << " | " << fmt("%.1f", r.seconds) << " | " << fmt("%.1e", r.bound.bound) << " | " << fmt("%.1e", r.error)
-       << " |\n";
+       << " | " << fmt("%.1e", r.bound.bound) << " | " << fmt("%.1e", r.error) << " |\n";
+    *c.timings << "million unknowns," << c.fine << "," << to_string(s) << "," << fmt("%.3g", r.seconds) << "\n";
   }
   md << "\nAt the same eps the penalised solution is further from the exact one here than on n = 16 (the "
         "nodal table above): the contact force concentrates on the rim, and its nodal density grows as h "
@@ -274,7 +288,8 @@ void cycling_active_set(std::ostream& md, const Context&) {
 
 // Every line of the bad-input list, and an interrupted run.
 void bad_inputs(std::ostream& md, const Context& c) {
-  md << "### Bad input\n\nEvery line of `tests/bad_input.tsv`, run through `plate -q` (with `--json` to a scratch "
+  md << "<!-- Written by build/hard_cases (make all); do not edit. -->\n\n"
+        "### Bad input\n\nEvery line of `tests/bad_input.tsv`, run through `plate -q` (with `--json` to a scratch "
         "file). Status 2 is bad input, 3 not converged (the outputs are written and say so), 4 another failure. "
         "The same list is a test in `make test`.\n\n";
   bad_input(md, c.plate, c.cases, c.scratch);
@@ -287,7 +302,7 @@ int main(int argc, char** argv) {
   plate::clean_up_on_interrupt("hard_cases");
   CLI::App app{"hard_cases: the cases the paper did not try (tiny eps, point and area contact, many contact regions,\n"
                "zero-force contact, n = 512, the cycling active set) and every kind of bad input for `plate`;\n"
-               "writes hard_cases.md."};
+               "writes hard_cases.md, hard_cases_input.md, hard_cases_point.csv and hard_cases_timings.csv."};
   std::string out = "results", reference = "reference";
   Context c;
   c.cases = "tests/bad_input.tsv", c.scratch = "build/hard-cases-work";
@@ -309,13 +324,23 @@ int main(int argc, char** argv) {
     c.point = published(constants, "point_centre", constants_path);
     c.sag = published(constants, "uniform_centre", constants_path);
     c.scene = read_paper_scene(reference);
-    std::ostringstream md;
+    std::ostringstream md, input, timings;
+    timings << "# hard_cases run times in seconds (they vary between runs)\ncase,n,run,seconds\n";
+    c.timings = &timings;
+    std::ostringstream point;
+    point << "# hard_cases: the point obstacle (centre node, height 0.01, f = 0); w_c / P against the published "
+             "coefficient\nn,touching,P,w_over_P,relative_difference,certified\n";
+    c.point_rows = &point;
     md << "<!-- Written by build/hard_cases (make all); do not edit. -->\n\n";
     for (auto section : {small_eps, point_obstacle, flat_support, many_regions, just_touching_obstacle,
-                         million_unknowns, cycling_active_set, bad_inputs})
+                         million_unknowns, cycling_active_set})
       section(md, c);
+    bad_inputs(input, c);
     std::filesystem::create_directories(out);
     write_file_atomically(out + "/hard_cases.md", md.str());
+    write_file_atomically(out + "/hard_cases_input.md", input.str());
+    write_file_atomically(out + "/hard_cases_timings.csv", timings.str());
+    write_file_atomically(out + "/hard_cases_point.csv", point.str());
   } catch (const std::exception& e) {
     std::cerr << "hard_cases: " << e.what() << "\n";
     return kFailure;
