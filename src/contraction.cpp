@@ -37,14 +37,17 @@ double sharp_contraction(double lambda1h, double eps) { return 1.0 / (1.0 + eps 
 double paper_rho(double c, double eps) { return (1.0 + c * eps) / ((1.0 + 2.0 * c * eps) * (1.0 + eps / c)); }
 // @end contraction-factors
 
-std::vector<double> linear_step_norms(const Problem& p, double eps, int iterations, VectorXd* last_iterate) {
+std::vector<double> linear_step_norms(const Problem& p, double eps, int iterations, VectorXd* last_iterate,
+                                      std::vector<double>* energies) {
   std::vector<double> steps;
   VectorXd last = VectorXd::Zero(p.grid.unknowns());
   // tol is never met: the level stops on max_iter and we read the steps. The level alone, not
   // solve(), which would end with an error bound nobody reads here.
   SolveOptions o = fixed_eps_options(Scheme::Linear, eps, 1e-300, iterations);
   o.on_iterate = [&](double, int, const VectorXd& w) {
-    steps.push_back(m_norm(p, w - last));
+    const VectorXd e = w - last;
+    steps.push_back(m_norm(p, e));
+    if (energies) energies->push_back(e.dot(p.K * e) + steps.back() * steps.back() / eps);
     last = w;
   };
   Cholesky chol;

@@ -27,8 +27,10 @@ double sharp_contraction(double lambda1h, double eps);
 double paper_rho(double c, double eps);
 
 // ||w^{n+1} - w^n||_M for n = 0 .. iterations - 1 of the linear scheme at fixed eps, from w^0 = 0;
-// the last iterate in *last_iterate if given.
-std::vector<double> linear_step_norms(const Problem& p, double eps, int iterations, VectorXd* last_iterate = nullptr);
+// the last iterate in *last_iterate if given, and in *energies the energy of each step,
+// E = e^T K e + eps^{-1} e^T M e, the quantity (D6) and the paper's rho bound.
+std::vector<double> linear_step_norms(const Problem& p, double eps, int iterations, VectorXd* last_iterate = nullptr,
+                                      std::vector<double>* energies = nullptr);
 
 // The factor by which (5a) shrinks the difference of two runs once both have settled on the
 // contact set of w (its asymptotic contraction there), to full precision by a rescaled difference.

@@ -1,0 +1,24 @@
+# Theorem 2 as a plot, from results/contraction.csv (written by build/contraction): against eps, the
+# factor by which the linear scheme (5a) shrinks its steps (no contact, and the slowest with the
+# paper's obstacle) and the ratio of the energies of its steps, beside q = 1/(1 + eps lambda_1h),
+# q^2 and the paper's rho, on h = 1/16.
+# Usage: gnuplot -e "fmt='svg'; out='results/contraction.svg'" paper/figures/contraction.gp
+if (fmt eq 'svg') { set terminal svg size 900,520 dynamic font 'Helvetica,15' } else { set terminal pngcairo size 900,520 font 'Helvetica,12' }
+set output out
+set datafile separator ','
+set logscale x
+set xlabel 'eps'
+set ylabel 'factor per step'
+set yrange [0:1]
+set grid
+set key outside right top box
+data = 'results/contraction.csv'
+fine(s, col) = (column(1) == 16 && strcol(2) eq s) ? column(col) : NaN
+plot data using 3:(fine('nodes', 5)) with lines lw 2 lc rgb '#1f4e8c' title 'q', \
+     data using 3:(fine('nodes', 8)) with lines lw 2 dt 2 lc rgb '#1f4e8c' title 'q^2', \
+     data using 3:(fine('nodes', 10)) with lines lw 1 dt 3 lc rgb '#c0392b' title "paper's rho", \
+     data using 3:(fine('nodes', 6)) with points pt 6 ps 1.6 lc rgb '#1f4e8c' title 'steps, no contact', \
+     data using 3:(fine('nodes', 7)) with points pt 7 ps 1.2 lc rgb '#2e8b57' title 'steps, obstacle (nodes)', \
+     data using 3:(fine('gauss', 7)) with points pt 5 ps 1.2 lc rgb '#8e44ad' title 'steps, obstacle (Gauss)', \
+     data using 3:(fine('nodes', 9)) with points pt 9 ps 1.4 lc rgb '#d35400' title 'energy, obstacle (nodes)', \
+     data using 3:(fine('gauss', 9)) with points pt 11 ps 1.4 lc rgb '#7f6000' title 'energy, obstacle (Gauss)'
