@@ -21,6 +21,8 @@ struct Moments {
 // Kirchhoff bending moments with D = 1: m11 = -(w11 + nu w22), m12 = -(1 - nu) w12,
 // m22 = -(w22 + nu w11). (The paper's printed matrix has +nu where -nu belongs.)
 Moments bending_moments(double wxx, double wxy, double wyy, double nu);
+// Poisson's ratio of every report here: the paper gives none, so this is our choice.
+constexpr double kPoissonRatio = 0.3;
 
 // xi_p = -eps^{-1} beta(w)(x_p) = eps^{-1} max(phi_p - (S w)_p, 0) >= 0 at the sample points.
 VectorXd contact_force_density(const Problem& p, const VectorXd& w, double eps);

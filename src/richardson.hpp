@@ -19,7 +19,9 @@ struct Extrapolation {
 
 // Eq. (D16): v_h = v + C h^p + ..., p from successive increments, v ~ v_h/4 + d / (2^p - 1).
 // noise[k] bounds the round-off in values[k] (empty: none).
+// Two observed orders within this of each other are called steady.
+constexpr double kSteadySpread = 0.3;
 Extrapolation extrapolate(const std::vector<double>& values, const std::vector<double>& noise = {},
-                          double spread = 0.3);
+                          double spread = kSteadySpread);
 
 }  // namespace plate

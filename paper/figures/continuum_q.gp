@@ -1,7 +1,7 @@
 # The line load q(theta) on the rim, from results/continuum_q.csv (written by build/continuum): the
 # multiplier at each rim point per unit length, edge sampling, on a quarter of the circle (the
-# square's symmetries give the rest), with the fit a0 + a1 cos 4 theta + a2 cos 8 theta + a3 cos 12
-# theta on the finest grid.
+# square's symmetries give the rest), with the code's own fit a0 + a1 cos 4 theta + a2 cos 8 theta +
+# a3 cos 12 theta on the finest grid (column 4), so that the plot shows the fit the report uses.
 # Usage: gnuplot -e "fmt='svg'; out='results/continuum_q.svg'" paper/figures/continuum_q.gp
 if (fmt eq 'svg') { set terminal svg size 900,480 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 900,480 font 'Helvetica,11' }
 set output out
@@ -19,8 +19,5 @@ finest = int(STATS_max)
 coarsest = int(STATS_min)
 nblocks = STATS_blocks
 fine(col) = (column(1) == finest) ? column(col) : NaN
-a0 = 25; a1 = 18; a2 = 1; a3 = 1
-f(x) = a0 + a1 * cos(4 * x) + a2 * cos(8 * x) + a3 * cos(12 * x)
-fit f(x) data using 2:(fine(3)) via a0, a1, a2, a3
 plot for [b = 0:nblocks - 1] data index b using 2:3 with points pt 7 ps 0.5 title sprintf('n = %d', coarsest * 2**b), \
-     f(x) with lines lw 2 lc 0 title sprintf('fit on n = %d: %.4g + %.4g cos 4t + %.3g cos 8t + %.3g cos 12t', finest, a0, a1, a2, a3)
+     data using 2:(fine(4)) with lines lw 2 lc 0 title sprintf('fit sum a_k cos 4k theta on n = %d', finest)

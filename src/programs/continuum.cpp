@@ -48,7 +48,7 @@ const std::vector<Quantity> kQuantities = {
     {"fitted q(pi/4)", "q_fit_theta_pi_4", &Row::q45},
     {"max |m12|", "max_abs_m12", &Row::m12},
 };
-constexpr double kNu = 0.3;
+constexpr double kNu = kPoissonRatio;
 
 Row solve_one(SamplingKind kind, int n, const PaperScene& scene) {
   const Field phi = scene.obstacle(), no_load = [](double, double) { return 0.0; };
@@ -158,7 +158,7 @@ std::string markdown(const Study& s) {
   }
   o << "**Observed orders and limits.** The order from three successive grids is log2 of the ratio of their "
        "increments; it exists where the increments keep one sign and shrink. Where the last two orders differ by "
-       "at most 0.3 the order is called steady, and the Richardson limit from the last three grids is given with "
+       "at most " << fmt("%g", kSteadySpread) << " the order is called steady, and the Richardson limit from the last three grids is given with "
        "an error bar: its distance to the limit the three grids before give. Elsewhere no extrapolation is trusted: "
        "the finest value is given with its last increment as the error bar, which bounds its error only if the "
        "increments beyond the finest grid at least halve each time.\n\n"
@@ -178,7 +178,8 @@ std::string markdown(const Study& s) {
 std::string limits(const Study& s) {
   std::ostringstream o;
   o << "# continuum: Richardson limits (edge sampling rows are the continuum answer); made by build/continuum\n"
-       "# steady: 1 if the last two observed orders differ by at most 0.3, and then limit is Richardson's and bar its\n"
+       "# steady: 1 if the last two observed orders differ by at most " << fmt("%g", kSteadySpread)
+    << ", and then limit is Richardson's and bar its\n"
        "# distance to the previous Richardson limit; 0: limit is the finest value and bar its last increment.\n"
        "# A bar within 10 times the round-off bound (u n^3 relative) is that bound instead\n"
        "quantity,sampling,steady,order,limit,bar\n";
@@ -214,8 +215,9 @@ std::string errors(const Study& s) {
 std::string line_loads(const Study& s) {
   std::ostringstream o;
   o << "# continuum: the line load q (force per unit length) at the rim points, edge sampling, n = 32 ... 256;\n"
-       "# made by build/continuum. Printed to the digits round-off leaves the same on every machine\n"
-       "n,theta,q\n";
+       "# made by build/continuum. Printed to the digits round-off leaves the same on every machine; fit: the\n"
+       "# least-squares fit sum_k a_k cos(4 k theta) on that grid (line_force.hpp) at the same angle\n"
+       "n,theta,q,fit\n";
   bool first = true;
   for (const Row& r : s.rows)
     if (r.kind == SamplingKind::Edge && r.n >= 32 && r.n <= 256) {
@@ -223,7 +225,8 @@ std::string line_loads(const Study& s) {
       first = false;
       const double noise = exact_solve_roundoff(r.n, r.line.max) * static_cast<double>(r.line.q.size());
       for (size_t k = 0; k < r.line.q.size(); ++k)
-        o << r.n << "," << fmt("%.10g", r.line.theta[k]) << "," << num(r.line.q[k], noise) << "\n";
+        o << r.n << "," << fmt("%.10g", r.line.theta[k]) << "," << num(r.line.q[k], noise) << ","
+          << num(line_force_fit(r.line, r.line.theta[k]), noise) << "\n";
     }
   return o.str();
 }

@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
                "height R; f = 0) on h = 1/4 and a fine grid, both samplings; writes fig2.csv, fig2_mesh.csv, fig2_fit.md."};
   std::string reference = "reference", out = "results";
   int fine = 64, steps = 8;
-  double eps = 1e-10, nu = 0.3, dR = 0.0125;
+  double eps = 1e-10, nu = kPoissonRatio, dR = 0.0125;
   std::vector<int> mesh = {4, 8, 16, 32, 64, 128};
   app.add_option("--reference", reference, "folder with paper_numbers.csv")->check(CLI::ExistingDirectory)->capture_default_str();
   app.add_option("--out", out, "folder for the outputs")->capture_default_str();

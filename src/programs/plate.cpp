@@ -112,7 +112,7 @@ struct Options {
   int n = 4;
   double lx = 1.0, ly = 1.0;
   std::string obstacle = "cylinder", load = "0", scheme = "exact", sampling = "edge", edge = "auto";
-  double R = 0.0625, radius = 0.25, nu = 0.3;  // the paper's cylinder (a test holds these to reference/)
+  double R = 0.0625, radius = 0.25, nu = plate::kPoissonRatio;  // the paper's cylinder (a test holds these to reference/)
   std::string centre = "0.5,0.5";
   plate::SolveOptions opt;
   double eps_fixed = 0;
