@@ -3,15 +3,20 @@
 BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
 DRIVERS := $(BUILD)/table $(BUILD)/fig1 $(BUILD)/fig2 $(BUILD)/contraction $(BUILD)/hard_cases $(BUILD)/bench $(BUILD)/peer_snesvi \
-           $(BUILD)/micro_bench $(BUILD)/continuum $(BUILD)/time_to_accuracy
+           $(BUILD)/micro_bench $(BUILD)/continuum $(BUILD)/time_to_accuracy $(BUILD)/prose_numbers
 BINS  := $(BUILD)/plate $(BUILD)/crosscheck $(BUILD)/plate_tests $(DRIVERS)
 PAPER_NUMBERS := reference/paper_numbers.csv
 
 TABLES    := results/table.md results/table.csv results/table_fine.md results/table_fine.csv
 FIG1_DATA := results/fig1_points.csv results/fig1_surface.dat results/fig1_contact.dat
 FIG2_DATA := results/fig2.csv results/fig2_mesh.csv results/fig2_fit.md results/fig2_mesh.md
-FIGURES   := results/fig1.svg results/fig1.png results/fig2.svg results/fig2.png
-RESULTS   := $(TABLES) results/contraction.md $(FIG1_DATA) $(FIG2_DATA) $(FIGURES)
+FIGURES   := results/fig1.svg results/fig1.png results/fig2.svg results/fig2.png results/contraction.svg results/contraction.png \
+             results/linear_history.svg results/linear_history.png
+CONTRACTION := results/contraction.md results/contraction.csv results/linear_history.csv
+RESULTS   := $(TABLES) $(CONTRACTION) $(FIG1_DATA) $(FIG2_DATA) $(FIGURES)
+CROSSCHECK := results/crosscheck.md results/crosscheck.csv results/crosscheck_agreement.csv results/crosscheck_timings.csv
+HARD_CASES := results/hard_cases.md results/hard_cases_input.md results/hard_cases_point.csv results/hard_cases_timings.csv
+NUMBERS   := results/numbers.csv results/numbers_machine.csv
 CONTINUUM_DATA := results/continuum.md results/continuum.csv results/continuum_error.csv results/continuum_q.csv \
                   results/continuum_answer.md results/continuum_limits.csv results/continuum_timings.csv
 CONTINUUM := $(CONTINUUM_DATA) results/continuum.svg results/continuum.png results/continuum_q.svg results/continuum_q.png
@@ -20,7 +25,9 @@ TTA       := results/time_to_accuracy.csv results/time_to_accuracy.md
 BENCH_ALL := $(BENCH) results/speed_vs_error.svg results/speed_vs_error.png results/micro_benchmarks.md \
              $(TTA) results/time_to_accuracy.svg results/time_to_accuracy.png
 PAPER_INPUTS := paper/paper.md paper/style.css $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp src/programs/*.cpp src/programs/support/*.cpp src/programs/support/*.hpp) \
-                $(RESULTS) $(CONTINUUM) results/crosscheck.md results/hard_cases.md $(BENCH) results/speed_vs_error.svg results/micro_benchmarks.md
+                $(RESULTS) $(CONTINUUM) $(CROSSCHECK) $(HARD_CASES) $(BENCH_ALL) $(NUMBERS)
+# The packages whose versions the document's reference list gives.
+VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread freefem++ gmsh libpetsc-real-dev pandoc gnuplot-nox g++
 
 # What each step makes and about how long it takes here (2 cores), said before it starts.
 say = @printf '\n== make: %s (about %s)\n' $(1) $(2)
@@ -51,14 +58,14 @@ test: build ## run the test suite
 
 crosscheck: results/crosscheck.md ## FreeFEM (HCT, gmsh) against this code: results/crosscheck.md
 
-results/crosscheck.md results/crosscheck.csv &: $(BUILD)/crosscheck reference/square_with_circle.geo reference/disk_with_punch.geo reference/contact_hct.edp reference/plate_constants.csv $(PAPER_NUMBERS) | deps
+$(CROSSCHECK) &: $(BUILD)/crosscheck reference/square_with_circle.geo reference/disk_with_punch.geo reference/contact_hct.edp reference/plate_constants.csv $(PAPER_NUMBERS) | deps
 	$(call say,"results/crosscheck.md: FreeFEM and this code on the square; FreeFEM on the disk","1 min")
 	$(BUILD)/crosscheck --out results --work $(BUILD)/crosscheck-work
 
 hard-cases: results/hard_cases.md ## tiny eps, area and point contact, n = 512, every bad input: results/hard_cases.md
 
 # It runs build/plate on every line of tests/bad_input.tsv, so it depends on both.
-results/hard_cases.md: $(BUILD)/hard_cases $(BUILD)/plate tests/bad_input.tsv reference/plate_constants.csv
+$(HARD_CASES) &: $(BUILD)/hard_cases $(BUILD)/plate tests/bad_input.tsv reference/plate_constants.csv
 	$(call say,"results/hard_cases.md: tiny eps; point and area contact; n = 512; every bad input","8 min")
 	$(BUILD)/hard_cases --out results --plate $(BUILD)/plate --cases tests/bad_input.tsv --scratch $(BUILD)/hard-cases-work
 
@@ -80,7 +87,7 @@ $(TABLES) &: $(BUILD)/table reference/paper_table.csv $(PAPER_NUMBERS)
 	$(call say,"results/table*: the paper's iteration table and the finer grids","6 min")
 	$(BUILD)/table --out results
 
-results/contraction.md: $(BUILD)/contraction $(PAPER_NUMBERS)
+$(CONTRACTION) &: $(BUILD)/contraction $(PAPER_NUMBERS)
 	$(call say,"results/contraction.md: the measured contraction factors","5 s")
 	$(BUILD)/contraction --out results
 
@@ -94,6 +101,7 @@ $(FIG2_DATA) &: $(BUILD)/fig2 $(PAPER_NUMBERS)
 
 results/fig1.svg results/fig1.png: $(FIG1_DATA)
 results/fig2.svg results/fig2.png: $(FIG2_DATA)
+results/contraction.svg results/contraction.png results/linear_history.svg results/linear_history.png: $(CONTRACTION)
 results/%.svg: paper/figures/%.gp | deps
 	gnuplot -e "fmt='svg'; out='$@.tmp'" $< && mv $@.tmp $@
 results/%.png: paper/figures/%.gp | deps
@@ -121,9 +129,17 @@ results/time_to_accuracy.svg results/time_to_accuracy.png: results/time_to_accur
 
 paper: results/paper.html ## the literate document: results/paper.html (self-contained, opens offline)
 
+# Every number the prose states, derived from the results above (paper/filters/numbers.lua fills them in).
+results/versions.csv: scripts/deps.sh | deps
+	{ echo 'package,version'; dpkg-query -W -f='$${Package},$${Version}\n' $(VERSIONED); } > $@.tmp && mv $@.tmp $@
+
+$(NUMBERS) &: $(BUILD)/prose_numbers $(RESULTS) $(CONTINUUM_DATA) $(CROSSCHECK) $(HARD_CASES) $(BENCH) results/versions.csv reference/plate_constants.csv
+	$(BUILD)/prose_numbers --out results
+
 results/paper.html: $(PAPER_INPUTS) | deps
 	$(call say,"results/paper.html","10 s")
 	pandoc paper/paper.md --from markdown --to html5 --standalone --self-contained --mathml \
+	  --lua-filter paper/filters/numbers.lua \
 	  --lua-filter paper/filters/equations.lua --lua-filter paper/filters/code.lua \
 	  --lua-filter paper/filters/include.lua --css paper/style.css --resource-path . \
 	  --toc --toc-depth 2 --output $@.tmp && mv $@.tmp $@

@@ -15,7 +15,7 @@ packages=(
   libopenblas0-pthread
   libgtest-dev libgmock-dev libbenchmark-dev
   freefem++ libfreefem++ gmsh
-  pandoc gnuplot-nox
+  pandoc gnuplot-nox fonts-dejavu-extra
   libpetsc-real-dev
 )
 

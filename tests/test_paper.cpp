@@ -138,6 +138,70 @@ TEST(Paper, EveryIncludedResultIsMadeByTheMakefile) {
   }
 }
 
+// The prose of paper/paper.md with what may carry digits taken out: HTML comments, fenced code,
+// inline code, {{key}} numbers (filled in from results/ by paper/filters/numbers.lua), include
+// blocks, link targets and the reference list (bibliographic data, not results).
+std::string prose_of(std::string doc) {
+  const auto cut = [&](const std::regex& re, const char* with = " ") { doc = std::regex_replace(doc, re, with); };
+  cut(std::regex(R"(<!--[\s\S]*?-->)"));
+  cut(std::regex(R"(```[\s\S]*?```)"));
+  cut(std::regex(R"(`[^`\n]*`)"));
+  cut(std::regex(R"(\{\{[^}]*\}\})"), " KEY ");
+  cut(std::regex(R"(::: \{include="[^"]*"\})"));
+  cut(std::regex(R"(\]\([^)]*\))"), "]");
+  cut(std::regex(R"(\\tag\{[^}]*\})"));
+  const auto refs = doc.find("\n# References");
+  if (refs != std::string::npos) {
+    const auto next = doc.find("\n# ", refs + 1);
+    doc.erase(refs, next == std::string::npos ? std::string::npos : next - refs);
+  }
+  return doc;
+}
+
+// A number in the prose is either a {{key}} or one of the paper's own data (reference/
+// paper_numbers.csv); a measured number typed by hand drifts from results/ when they are rebuilt.
+// Decimals, exponents and percentages are numbers; so are the words that stand for a measured size.
+TEST(Paper, EveryNumberInTheProseComesFromResults) {
+  const std::string prose = prose_of(slurp(kRoot / "paper/paper.md"));
+  std::set<double> data;
+  for (const auto& [key, v] : plate::read_paper_numbers(kRoot / "reference/paper_numbers.csv")) data.insert(v);
+  const std::regex number(R"((\d+\.\d+|\d(\.\d+)?e[-+]?\d+|\d+\s*%|\bper cent\b))");
+  int checked = 0;
+  for (std::sregex_iterator it(prose.begin(), prose.end(), number), end; it != end; ++it) {
+    ++checked;
+    const std::string n = it->str();
+    const bool paper_data = n.find_first_of("e%p") == std::string::npos && data.count(std::stod(n));
+    const std::string context = prose.substr(std::max<long>(0, it->position() - 40), 90);
+    EXPECT_TRUE(paper_data) << "\"" << n << "\" in the prose has no source: \"" << context
+                            << "\"; write it as {{key}} (build/prose_numbers) or say it without a number";
+  }
+  EXPECT_GT(checked, 0) << "the paper's own data (0.0625, 0.25) should be among the numbers seen";
+  const std::regex vague(R"(\b(tens|hundreds|thousands|dozens?|twenty|thirty|forty|fifty|fortieth|several|a few dozen)\b)",
+                         std::regex::icase);
+  for (std::sregex_iterator it(prose.begin(), prose.end(), vague), end; it != end; ++it)
+    ADD_FAILURE() << "\"" << it->str() << "\" stands for a measured size: \""
+                  << prose.substr(std::max<long>(0, it->position() - 40), 90) << "\"; give the number as {{key}}";
+  // Every key the prose names is one that build/prose_numbers writes.
+  const std::string doc = slurp(kRoot / "paper/paper.md");
+  const std::string written = slurp(kRoot / "results/numbers.csv") + slurp(kRoot / "results/numbers_machine.csv");
+  for (const auto& key : matches(doc, std::regex(R"(\{\{([^}]+)\}\})")))
+    EXPECT_NE(written.find("\n" + key + ","), std::string::npos) << "{{" << key << "}} is in no results/numbers*.csv";
+}
+
+// What a reader's browser shows must not carry Markdown that pandoc did not turn into a table
+// (a row cut from its header becomes a "line block" of raw pipes), nor an option whose two
+// dashes smart punctuation turned into a dash (a copied "--scheme" would then not run).
+TEST(Paper, TheBuiltPageHasNoRawTableRowsOrMangledOptions) {
+  const std::string html = slurp(kRoot / "results/paper.html");
+  ASSERT_FALSE(html.empty());
+  EXPECT_EQ(html.find("class=\"line-block\""), std::string::npos) << "a table row rendered as a line block";
+  std::smatch m;
+  EXPECT_FALSE(std::regex_search(html, m, std::regex(R"(<p>\s*\|[^<]*\|)"))) << "raw pipe row: " << m.str();
+  const std::regex dashed(R"((^|[\s(>"'`])(\xE2\x80\x93|\xE2\x80\x94)[a-z][a-z-]+)");
+  EXPECT_FALSE(std::regex_search(html, m, dashed)) << "an option with its dashes made into a dash: " << m.str();
+  EXPECT_EQ(html.find("{{"), std::string::npos) << "a {{key}} was left unfilled";
+}
+
 TEST(Published, TheTableIsTheOneInThePaper) {
   // Independent of the CSV: the first and last rows and the row count, read off the paper's text.
   const auto t = plate::read_paper_table(kRoot / "reference/paper_table.csv");

@@ -2,12 +2,15 @@
 # (results/fig1_points.csv); (b) the computed deflection (results/fig1_surface.dat) with the
 # sample points where the plate rests on the obstacle (results/fig1_contact.dat). Written by build/fig1.
 # Usage: gnuplot -e "fmt='svg'; out='results/fig1.svg'" paper/figures/fig1.gp   (fmt: svg or png)
-if (fmt eq 'svg') { set terminal svg size 1350,440 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 1350,440 font 'Helvetica,11' }
+# Two panels above, the section below: at the document's column width (about 880 px) the labels
+# stay at the size of the text, where three panels side by side shrank them to 7 px.
+if (fmt eq 'svg') { set terminal svg size 900,880 dynamic font 'Helvetica,16' } else { set terminal pngcairo size 900,880 font 'Helvetica,13' }
 set output out
-set multiplot layout 1,3
+set multiplot
 
-set title '(a) the square, the h = 1/4 grid, the disk, check points'
-set size ratio -1
+set title '(a) the grid h = 1/4, the disk, check points'
+set origin 0, 0.36
+set size ratio -1 0.5, 0.64
 set xrange [-0.05:1.05]
 set yrange [-0.05:1.05]
 set xtics 0,0.25,1
@@ -30,8 +33,9 @@ unset object 1
 unset key
 set datafile separator whitespace
 
-set title '(b) w (h = 1/32) from above; contact points in red'
-set size ratio -1
+set title '(b) w (h = 1/32); contact points red'
+set origin 0.5, 0.36
+set size ratio -1 0.5, 0.64
 set xrange [0:1]
 set yrange [0:1]
 set xtics 0,0.25,1
@@ -51,7 +55,8 @@ unset contour
 unset colorbox
 
 set title '(c) the section y = 1/2: the plate rests on the rim'
-set size noratio
+set origin 0, 0
+set size noratio 1, 0.36
 set xrange [0:1]
 set yrange [-0.005:0.11]
 set xtics 0,0.25,1

@@ -3,7 +3,8 @@
 --   ```
 -- is replaced by the lines between "// @region linear-scheme" and "// @end linear-scheme" in
 -- that file, with a caption line naming the file and the lines. A missing file or region stops
--- the build (so does a region that is opened twice or never closed).
+-- the build (so does a region that is opened twice or never closed). An attribute
+-- fold="The code of ..." shows the listing closed, under that line.
 local function read_lines(path)
   local f = io.open(path, "r")
   if not f then error("code.lua: cannot open " .. path) end
@@ -44,5 +45,14 @@ function CodeBlock(el)
   local text, a, b = region(path, name)
   local caption = pandoc.Para({pandoc.Code(path), pandoc.Str(", lines " .. a .. "–" .. b .. " (region "),
                                pandoc.Code(name), pandoc.Str(")")})
-  return pandoc.Div({caption, pandoc.CodeBlock(text, {class = "cpp"})}, {class = "listing"})
+  local listing = pandoc.Div({caption, pandoc.CodeBlock(text, {class = "cpp"})}, {class = "listing"})
+  -- fold="..." keeps a long listing out of the reader's way: closed, with that line to open it.
+  local fold = el.attributes["fold"]
+  if not fold then return listing end
+  local lines = select(2, text:gsub("\n", "")) + 1
+  return pandoc.Div({
+    pandoc.RawBlock("html", "<details><summary>" .. fold .. " (" .. lines .. " lines)</summary>"),
+    listing,
+    pandoc.RawBlock("html", "</details>"),
+  }, {class = "folded"})
 end

@@ -11,8 +11,15 @@ function Div(el)
   if not f then error("include.lua: cannot open " .. path .. " (run make results first)") end
   local text = f:read("a")
   f:close()
-  local blocks = pandoc.read(text, "markdown").blocks:walk({
+  -- Without smart punctuation: a report that says "--scheme nonlinear" must keep its two dashes.
+  local blocks = pandoc.read(text, "markdown-smart").blocks:walk({
     Header = function(h) h.level = math.min(h.level + 2, 6); return h end,
+    -- 6.25e-07 must not wrap after its "e-": numbers go in a span the style sheet keeps whole.
+    Str = function(s)
+      if s.text:match("^[<>~%(]?[+%-]?%d[%d%.]*e[+%-]%d+") or s.text:match("^[+%-]%d[%d%.]*") then
+        return pandoc.Span({s}, {class = "num"})
+      end
+    end,
   })
   return pandoc.Div(blocks, {class = "included", ["data-source"] = path})
 end

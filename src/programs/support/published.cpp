@@ -2,6 +2,7 @@
 // the columns, fields are separated by commas and never quoted.
 #include "published.hpp"
 
+#include "csv_table.hpp"
 #include "fields.hpp"
 
 #include <cmath>
@@ -41,17 +42,7 @@ Rows read_rows(const std::string& path, std::size_t columns) {
   return rows;
 }
 
-double to_double(const std::string& path, const std::string& s) {
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(s, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != s.size()) throw std::runtime_error(path + ": \"" + s + "\" is not a number");
-  return v;
-}
+double to_double(const std::string& path, const std::string& s) { return parse_number(s, path); }
 }  // namespace
 
 std::vector<PublishedRow> read_paper_table(const std::string& path) {

@@ -1,0 +1,277 @@
+// prose_numbers: every number the document's prose states, derived from the files in results/ (and
+// the published constants in reference/), written to results/numbers.csv as key,value,source. The
+// document names a number as {{key}} and paper/filters/numbers.lua puts the value in, so the prose
+// cannot drift from the results it describes. Keys whose source is a timing or a package version
+// go to results/numbers_machine.csv, so that numbers.csv rebuilds byte for byte.
+// `prose_numbers --help` lists the options.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "atomic_file.hpp"
+#include "csv_table.hpp"
+#include "exit_codes.hpp"
+#include "format.hpp"
+#include "contact.hpp"
+#include "published.hpp"
+#include "richardson.hpp"
+
+using namespace plate;
+
+namespace {
+
+// One file of numbers: key -> (value as printed, where it comes from).
+class Numbers {
+ public:
+  void put(const std::string& key, const std::string& value, const std::string& source) {
+    for (const std::string* s : {&key, &value, &source})
+      if (s->find(',') != std::string::npos || s->find('\n') != std::string::npos)
+        throw std::logic_error("prose_numbers: a comma or newline in \"" + *s + "\"");
+    if (!entries_.emplace(key, std::make_pair(value, source)).second)
+      throw std::logic_error("prose_numbers: key " + key + " set twice");
+  }
+  std::string csv(const std::string& what) const {
+    std::ostringstream out;
+    out << "# Written by build/prose_numbers (make paper): " << what << "\n# The document names each as {{key}}.\n"
+        << "key,value,source\n";
+    for (const auto& [key, vs] : entries_) out << key << ',' << vs.first << ',' << vs.second << '\n';
+    return out.str();
+  }
+
+ private:
+  std::map<std::string, std::pair<std::string, std::string>> entries_;
+};
+
+struct Range {
+  double lo = INFINITY, hi = -INFINITY;
+  void add(double v) {
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+};
+
+Range range_of(const CsvTable& t, const std::vector<std::size_t>& rows,
+               const std::function<double(std::size_t)>& value) {
+  if (rows.empty()) throw std::runtime_error(t.path + ": no rows for a range");
+  Range r;
+  for (std::size_t row : rows) r.add(value(row));
+  return r;
+}
+
+// Integers and small counts print as such; ratios to two significant digits at most, so that a
+// prose range does not claim digits a rerun of a noisy timing would change.
+std::string count(double v) { return fmt("%.0f", v); }
+std::string ratio(double v) {
+  if (v < 100) return fmt("%.2g", v);
+  const double unit = std::pow(10.0, std::floor(std::log10(v)) - 1);  // two significant digits
+  return fmt("%.0f", std::round(v / unit) * unit);
+}
+
+// The paper's table on its own grid (results/table.csv): what the linear scheme's stopping rule
+// hides, and what the nonlinear scheme reaches.
+void table_numbers(Numbers& num, const std::string& results) {
+  const CsvTable t = read_csv_table(results + "/table.csv");
+  const auto linear = t.where([&](std::size_t r) { return t.text(r, "scheme") == "linear"; });
+  const auto nonlinear = t.where([&](std::size_t r) { return t.text(r, "scheme") == "nonlinear"; });
+  const std::string src = "results/table.csv";
+  const Range over_tol = range_of(t, linear, [&](std::size_t r) { return t.number(r, "error") / t.number(r, "tolerance"); });
+  num.put("table.linear_error_over_tol_min", ratio(over_tol.lo), src + " linear rows: error / tolerance");
+  num.put("table.linear_error_over_tol_max", ratio(over_tol.hi), src + " linear rows: error / tolerance");
+  const Range linear_its = range_of(t, linear, [&](std::size_t r) { return t.number(r, "iterations"); });
+  num.put("table.linear_iterations_max", count(linear_its.hi), src + " linear rows: iterations");
+  const Range its = range_of(t, nonlinear, [&](std::size_t r) { return t.number(r, "iterations"); });
+  num.put("table.nonlinear_iterations_min", count(its.lo), src + " nonlinear rows: iterations");
+  num.put("table.nonlinear_iterations_max", count(its.hi), src + " nonlinear rows: iterations");
+  // The linear scheme's error over the nonlinear scheme's, row pair by row pair (same sampling and OS).
+  Range gain;
+  for (std::size_t a : linear)
+    for (std::size_t b : nonlinear)
+      if (t.text(a, "sampling") == t.text(b, "sampling") && t.text(a, "tolerance") == t.text(b, "tolerance"))
+        gain.add(t.number(a, "error") / t.number(b, "error"));
+  num.put("table.error_gain_min", ratio(gain.lo), src + " linear error / nonlinear error per sampling and OS");
+  num.put("table.error_gain_max", ratio(gain.hi), src + " linear error / nonlinear error per sampling and OS");
+  Range g_over_n;
+  for (std::size_t a : linear)
+    for (std::size_t b : linear)
+      if (t.text(a, "sampling") == "gauss" && t.text(b, "sampling") == "nodes" &&
+          t.text(a, "tolerance") == t.text(b, "tolerance"))
+        g_over_n.add(t.number(a, "iterations") / t.number(b, "iterations"));
+  Range over_paper;
+  for (std::size_t r : linear)
+    if (t.text(r, "sampling") == "nodes") over_paper.add(t.number(r, "iterations") / t.number(r, "paper_iterations"));
+  num.put("table.nodes_over_paper_min", ratio(over_paper.lo), src + " nodes linear rows: iterations / paper_iterations");
+  num.put("table.nodes_over_paper_max", ratio(over_paper.hi), src + " nodes linear rows: iterations / paper_iterations");
+  num.put("table.gauss_over_nodes_iterations_min", ratio(g_over_n.lo), src + " linear iterations gauss / nodes per OS");
+  num.put("table.gauss_over_nodes_iterations_max", ratio(g_over_n.hi), src + " linear iterations gauss / nodes per OS");
+}
+
+void table_fine_numbers(Numbers& num, const std::string& results) {
+  const CsvTable t = read_csv_table(results + "/table_fine.csv");
+  const auto linear = t.where("scheme", "linear");
+  const std::string src = "results/table_fine.csv";
+  const Range err = range_of(t, linear, [&](std::size_t r) { return t.number(r, "error"); });
+  num.put("table_fine.linear_error_min", fmt("%.1e", err.lo), src + " linear rows: error");
+  num.put("table_fine.linear_error_max", fmt("%.1e", err.hi), src + " linear rows: error");
+}
+
+// The cross-check's verdict on the square (results/crosscheck_agreement.csv): the tolerance to which
+// the two codes' limits agree, relative to the value.
+void crosscheck_numbers(Numbers& num, const std::string& results) {
+  const CsvTable t = read_csv_table(results + "/crosscheck_agreement.csv");
+  for (const char* q : {"max_w", "total_force", "mean_line_force"}) {
+    const auto rows = t.where("quantity", q);
+    if (rows.size() != 1) throw std::runtime_error(t.path + ": expected one row for " + q);
+    num.put(std::string("crosscheck.") + q + "_relative", t.text(rows[0], "relative"),
+            "results/crosscheck_agreement.csv " + std::string(q) + ": relative tolerance of agreement");
+  }
+}
+
+// The point obstacle of the hard cases (results/hard_cases_point.csv): the finest grid's w_c / P.
+void hard_cases_numbers(Numbers& num, const std::string& results) {
+  const CsvTable t = read_csv_table(results + "/hard_cases_point.csv");
+  if (t.rows.empty()) throw std::runtime_error(t.path + ": no rows");
+  const std::size_t last = t.rows.size() - 1;
+  const std::string src = "results/hard_cases_point.csv finest row";
+  num.put("hard_cases.point_n_finest", t.text(last, "n"), src);
+  num.put("hard_cases.point_w_over_P_finest", t.text(last, "w_over_P"), src);
+  num.put("hard_cases.point_gap_percent_finest", fmt("%.2f", 100 * t.number(last, "relative_difference")), src);
+  num.put("hard_cases.point_gap_percent_first", fmt("%.2f", 100 * t.number(0, "relative_difference")),
+          "results/hard_cases_point.csv first row");
+  num.put("hard_cases.point_n_first", t.text(0, "n"), "results/hard_cases_point.csv first row");
+}
+
+// The speed report (results/speed_vs_error.csv): the exact solver against one factorisation, and
+// the peers against the exact solver. Timings: these go to the machine's file.
+void bench_numbers(Numbers& num, const std::string& results) {
+  const CsvTable t = read_csv_table(results + "/speed_vs_error.csv");
+  const std::string src = "results/speed_vs_error.csv";
+  const auto exact = t.where("solver", "exact");
+  // Grids that take milliseconds time the clock more than the solver: the ratios start at n = 32.
+  constexpr int kTimedFrom = 32;
+  const auto with_ratio = t.where([&](std::size_t r) {
+    return t.text(r, "solver") == "exact" && !t.text(r, "ratio").empty() && t.number(r, "n") >= kTimedFrom;
+  });
+  num.put("bench.ratio_n_from", std::to_string(kTimedFrom), "src/programs/prose_numbers.cpp kTimedFrom");
+  const Range rr = range_of(t, with_ratio, [&](std::size_t r) { return t.number(r, "ratio"); });
+  num.put("bench.exact_ratio_min", fmt("%.1f", rr.lo), src + " exact rows: seconds / baseline seconds");
+  num.put("bench.exact_ratio_max", fmt("%.1f", rr.hi), src + " exact rows: seconds / baseline seconds");
+  const std::size_t finest = with_ratio.back(), largest = exact.back();
+  num.put("bench.n_finest", t.text(finest, "n"), src + " largest n with a baseline");
+  num.put("bench.exact_seconds_finest", fmt("%.3g", t.number(finest, "seconds")), src + " exact at that n");
+  num.put("bench.unknowns_finest_million", fmt("%.2g", t.number(finest, "unknowns") / 1e6), src + " unknowns at that n");
+  num.put("bench.n_largest", t.text(largest, "n"), src + " largest exact n");
+  num.put("bench.exact_seconds_largest", fmt("%.3g", t.number(largest, "seconds")), src + " exact at the largest n");
+  num.put("bench.exact_factorizations_largest", t.text(largest, "factorizations"), src + " exact at the largest n");
+  num.put("bench.exact_grids_largest", count(std::log2(t.number(largest, "n") / t.number(exact.front(), "n")) + 1),
+          src + " grids of the sequence from the smallest n");
+  // What a grid costs against the one with twice the cell size: one factorisation and solve.
+  Range growth;
+  const auto base = t.where("solver", "baseline");
+  for (std::size_t k = 1; k < base.size(); ++k)
+    if (t.number(base[k], "n") >= 64) growth.add(t.number(base[k], "seconds") / t.number(base[k - 1], "seconds"));
+  num.put("bench.baseline_growth_min", fmt("%.2g", growth.lo), src + " baseline seconds(n) / seconds(n/2) for n >= 64");
+  num.put("bench.baseline_growth_max", fmt("%.2g", growth.hi), src + " baseline seconds(n) / seconds(n/2) for n >= 64");
+  // The peers' time over ours on the same n, over the runs our certificate accepts.
+  for (const char* peer : {"snesvi-rsls", "snesvi-ssls"}) {
+    Range over;
+    for (std::size_t r : t.where("solver", peer)) {
+      if (t.text(r, "converged") != "yes") continue;
+      for (std::size_t e : exact)
+        if (t.text(e, "n") == t.text(r, "n")) over.add(t.number(r, "seconds") / t.number(e, "seconds"));
+    }
+    if (!(over.hi >= over.lo)) throw std::runtime_error(src + ": no certified run of " + peer);
+    const std::string key = std::string("bench.") + (std::string(peer) == "snesvi-rsls" ? "rsls" : "ssls");
+    num.put(key + "_over_ours_min", fmt("%.2g", over.lo), src + " " + peer + " seconds / exact seconds (certified runs)");
+    num.put(key + "_over_ours_max", fmt("%.2g", over.hi), src + " " + peer + " seconds / exact seconds (certified runs)");
+  }
+}
+
+// The continuum study's limits (results/continuum_limits.csv): how far the nodal total force's
+// "steady" Richardson limit lies from the edge-sampling answer, in its own error bars.
+void continuum_numbers(Numbers& num, const std::string& results) {
+  const CsvTable t = read_csv_table(results + "/continuum_limits.csv");
+  const auto row = [&](const std::string& q, const std::string& sampling) {
+    for (std::size_t r : t.where("quantity", q))
+      if (t.text(r, "sampling") == sampling) return r;
+    throw std::runtime_error(t.path + ": no row " + q + "," + sampling);
+  };
+  for (const char* q : {"max_w", "total_force", "mean_line_force"}) {
+    const std::size_t r = row(q, "edge");
+    num.put(std::string("continuum.") + q + "_limit", t.text(r, "limit"), "results/continuum_limits.csv " + std::string(q) + " edge limit");
+    num.put(std::string("continuum.") + q + "_bar", t.text(r, "bar"), "results/continuum_limits.csv " + std::string(q) + " edge bar");
+  }
+  const std::size_t nodes = row("total_force", "nodes"), edge = row("total_force", "edge");
+  const std::string src = "results/continuum_limits.csv total_force";
+  // How far the point values of the line load scatter about their fit, on the finest grid kept.
+  const CsvTable q = read_csv_table(results + "/continuum_q.csv");
+  const std::string finest = q.text(q.rows.size() - 1, "n");
+  double scatter = 0;
+  for (std::size_t r : q.where("n", finest))
+    scatter = std::max(scatter, std::abs(q.number(r, "q") / q.number(r, "fit") - 1));
+  num.put("continuum.q_scatter_percent", fmt("%.0f", 100 * scatter),
+          "results/continuum_q.csv finest n: max |q / fit - 1| in per cent");
+  num.put("continuum.q_n_finest", finest, "results/continuum_q.csv finest n");
+  num.put("continuum.nodes_force_limit", t.text(nodes, "limit"), src + " nodes limit");
+  num.put("continuum.nodes_force_bar", t.text(nodes, "bar"), src + " nodes bar");
+  num.put("continuum.nodes_force_bars_off",
+          fmt("%.0f", std::abs(t.number(nodes, "limit") - t.number(edge, "limit")) / t.number(nodes, "bar")),
+          src + " |nodes limit - edge limit| / nodes bar");
+}
+
+// Package versions of the machine that built the document (results/versions.csv, from dpkg).
+void version_numbers(Numbers& num, const std::string& results) {
+  const CsvTable t = read_csv_table(results + "/versions.csv");
+  for (std::size_t r = 0; r < t.rows.size(); ++r)
+    num.put("version." + t.text(r, "package"), t.text(r, "version"), "results/versions.csv (dpkg-query)");
+}
+
+// Our own choices that the prose states, from the constants the code uses.
+void model_numbers(Numbers& num) {
+  num.put("model.nu", fmt("%g", kPoissonRatio), "src/contact.hpp kPoissonRatio");
+  num.put("richardson.steady_spread", fmt("%g", kSteadySpread), "src/richardson.hpp kSteadySpread");
+}
+
+// Published constants the prose quotes, with their reference.
+void published_numbers(Numbers& num, const std::string& reference) {
+  const std::string src = "reference/plate_constants.csv";
+  num.put("published.lambda1", fmt("%.10f", plate_constant(reference, "lambda1")), src + " (Bjorstad and Tjostheim 1999)");
+  num.put("published.point_centre", fmt("%.5f", plate_constant(reference, "point_centre")), src + " (Timoshenko)");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  clean_up_on_interrupt("prose_numbers");
+  CLI::App app{"prose_numbers: the numbers the document's prose states, from results/; writes numbers.csv and "
+               "numbers_machine.csv."};
+  std::string results = "results", reference = "reference", out = "results";
+  app.add_option("--results", results, "folder with the results to read")->check(CLI::ExistingDirectory)->capture_default_str();
+  app.add_option("--reference", reference, "folder with plate_constants.csv")->check(CLI::ExistingDirectory)->capture_default_str();
+  app.add_option("--out", out, "folder for numbers.csv and numbers_machine.csv")->capture_default_str();
+  app.footer(kExitStatusHelp);
+  if (const int status = parse_options(app, argc, argv, "prose_numbers"); status >= 0) return status;
+  try {
+    Numbers fixed, machine;
+    table_numbers(fixed, results);
+    table_fine_numbers(fixed, results);
+    crosscheck_numbers(fixed, results);
+    hard_cases_numbers(fixed, results);
+    continuum_numbers(fixed, results);
+    published_numbers(fixed, reference);
+    model_numbers(fixed);
+    bench_numbers(machine, results);
+    version_numbers(machine, results);
+    write_file_atomically(out + "/numbers.csv", fixed.csv("numbers that rebuild byte for byte"));
+    write_file_atomically(out + "/numbers_machine.csv",
+                          machine.csv("numbers of this machine (timings, package versions); they vary"));
+  } catch (const std::exception& e) {
+    std::cerr << "prose_numbers: " << e.what() << '\n';
+    return kFailure;
+  }
+  return 0;
+}
