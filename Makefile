@@ -14,7 +14,9 @@ FIGURES   := results/fig1.svg results/fig1.png results/fig2.svg results/fig2.png
              results/linear_history.svg results/linear_history.png
 CONTRACTION := results/contraction.md results/contraction.csv results/linear_history.csv
 RESULTS   := $(TABLES) $(CONTRACTION) $(FIG1_DATA) $(FIG2_DATA) $(FIGURES)
-CROSSCHECK := results/crosscheck.md results/crosscheck.csv results/crosscheck_agreement.csv results/crosscheck_timings.csv
+CROSSCHECK := results/crosscheck.md results/crosscheck.csv results/crosscheck_agreement.csv results/crosscheck_rim.csv \
+              results/crosscheck_timings.csv
+RIM_FIGURE := results/rim.svg results/rim.png
 HARD_CASES := results/hard_cases.md results/hard_cases_input.md results/hard_cases_point.csv results/hard_cases_timings.csv
 NUMBERS   := results/numbers.csv results/numbers_machine.csv
 CONTINUUM_DATA := results/continuum.md results/continuum.csv results/continuum_error.csv results/continuum_q.csv \
@@ -25,7 +27,7 @@ TTA       := results/time_to_accuracy.csv results/time_to_accuracy.md
 BENCH_ALL := $(BENCH) results/speed_vs_error.svg results/speed_vs_error.png results/micro_benchmarks.md \
              $(TTA) results/time_to_accuracy.svg results/time_to_accuracy.png
 PAPER_INPUTS := paper/paper.md paper/style.css $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp src/programs/*.cpp src/programs/support/*.cpp src/programs/support/*.hpp) \
-                $(RESULTS) $(CONTINUUM) $(CROSSCHECK) $(HARD_CASES) $(BENCH_ALL) $(NUMBERS)
+                $(RESULTS) $(CONTINUUM) $(CROSSCHECK) $(RIM_FIGURE) $(HARD_CASES) $(BENCH_ALL) $(NUMBERS)
 # The packages whose versions the document's reference list gives.
 VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread freefem++ gmsh libpetsc-real-dev pandoc gnuplot-nox g++
 
@@ -102,6 +104,7 @@ $(FIG2_DATA) &: $(BUILD)/fig2 $(PAPER_NUMBERS)
 results/fig1.svg results/fig1.png: $(FIG1_DATA)
 results/fig2.svg results/fig2.png: $(FIG2_DATA)
 results/contraction.svg results/contraction.png results/linear_history.svg results/linear_history.png: $(CONTRACTION)
+$(RIM_FIGURE): results/crosscheck_rim.csv
 results/%.svg: paper/figures/%.gp | deps
 	gnuplot -e "fmt='svg'; out='$@.tmp'" $< && mv $@.tmp $@
 results/%.png: paper/figures/%.gp | deps

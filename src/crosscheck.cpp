@@ -14,7 +14,8 @@
 
 namespace plate {
 
-CheckValues solve_ours(int n, const SamplingSpec& spec, const Field& phi, double radius) {
+CheckValues solve_ours(int n, const SamplingSpec& spec, const Field& phi, const EdgeCurve& rim) {
+  const double radius = rim.r;
   const auto t0 = Clock::now();
   const Field no_load = [](double, double) { return 0.0; };
   const Problem p = make_problem(make_grid(n), spec, phi, no_load);
@@ -31,8 +32,9 @@ CheckValues solve_ours(int n, const SamplingSpec& spec, const Field& phi, double
   for (const CheckPoint& c : kCheckPoints) v.w_at.push_back(evaluate(p.grid, x.w, c.x, c.y).w);
   v.force = total_contact_force(p, x.lambda);
   v.mean_line = v.force / (2 * M_PI * radius);  // with f = 0 the whole push is on the rim
-  const LineForce line = line_force(p, x.lambda);
-  v.q0 = line_force_fit(line, 0), v.q45 = line_force_fit(line, M_PI / 4);  // NaN without edge rows
+  v.line = line_force(p, x.lambda);
+  v.q0 = line_force_fit(v.line, 0), v.q45 = line_force_fit(v.line, M_PI / 4);  // NaN without edge rows
+  if (v.line.empty()) v.line = binned_line_force(p, x.lambda, rim, kRimBins);
   v.seconds = seconds_since(t0);
   return v;
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "line_force.hpp"
 #include "problem.hpp"
 #include "richardson.hpp"
 
@@ -31,6 +32,9 @@ struct CheckValues {
   double max_w = 0, force = 0;
   std::vector<double> w_at;  // at the check points, in order
   double mean_line = 0, q0 = 0, q45 = 0;  // line load on the rim: mean, and fitted q(0), q(pi/4)
+  // The line load itself: at the edge points (edge sampling), at the circle's vertices (FreeFEM), or
+  // binned by angle (the other samplings; q0 and q45 stay NaN for those).
+  LineForce line;
   double seconds = 0;
 };
 // One quantity across a sequence of grids, coarse to fine.
@@ -38,8 +42,9 @@ std::vector<double> values_of(const std::vector<CheckValues>& runs, double Check
 std::vector<double> values_at(const std::vector<CheckValues>& runs, int point);
 
 // Our side: the exact discrete solution on n x n squares with f = 0, the constraint sampled as
-// `spec` says; its line load on the circle of radius `radius` (edge sampling on that circle only).
-CheckValues solve_ours(int n, const SamplingSpec& spec, const Field& phi, double radius);
+// `spec` says; its line load on the circle `rim` (binned into kRimBins arcs for samplings off it).
+constexpr int kRimBins = 32;  // arcs of about 6 h at n = 128: a few touching samples each
+CheckValues solve_ours(int n, const SamplingSpec& spec, const Field& phi, const EdgeCurve& rim);
 // Our clamped square under f = 1: w(0.5, 0.5).
 double uniform_load_centre_ours(int n);
 

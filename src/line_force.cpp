@@ -74,6 +74,23 @@ LineForce line_force_from_point_forces(const std::vector<double>& theta, const s
   return f;
 }
 
+LineForce binned_line_force(const Problem& p, const VectorXd& lambda, const EdgeCurve& circle, int bins) {
+  if (bins < 8 || bins % 8 != 0 || !(circle.r > 0))
+    throw std::invalid_argument("binned_line_force: need a multiple of 8 bins and r > 0");
+  std::vector<double> theta(bins), force(bins, 0.0);
+  const double width = 2 * M_PI / bins;
+  // Bins centred on 0, width, 2 width, ...: with bins a multiple of 8, the square's symmetries map
+  // bins onto bins, and theta = 0 and pi/4 are bin centres.
+  for (int b = 0; b < bins; ++b) theta[b] = b * width;
+  for (int s = 0; s < p.sampling.size(); ++s) {
+    if (!(lambda[s] > 0)) continue;
+    const double angle = std::atan2(p.sampling.y[s] - circle.cy, p.sampling.x[s] - circle.cx);
+    const int b = static_cast<int>(std::lround(angle / width));
+    force[((b % bins) + bins) % bins] += p.sampling.weights[s] * lambda[s];
+  }
+  return line_force_from_point_forces(theta, force, circle.r);
+}
+
 double line_force_fit(const LineForce& f, double theta) {
   if (f.fourier.empty()) return NAN;
   double q = 0;

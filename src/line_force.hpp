@@ -31,6 +31,13 @@ LineForce line_force(const Problem& p, const VectorXd& lambda, int harmonics = 4
 LineForce line_force_from_point_forces(const std::vector<double>& theta, const std::vector<double>& force,
                                        double radius, int harmonics = 4);
 
+// Eq. (9) for samples off the circle (grid nodes, Gauss points): the force W_p lambda_p of every
+// sample, gathered by its angle about the circle's centre into `bins` equal arcs and spread over
+// the arc's length. A coarse force per unit length, but one that every sampling, and another code's
+// point forces, can be set beside. Throws std::invalid_argument unless bins is a positive multiple
+// of 8 (so that the square's symmetries map bins onto bins) and r > 0.
+LineForce binned_line_force(const Problem& p, const VectorXd& lambda, const EdgeCurve& circle, int bins);
+
 // q at the edge point nearest the angle theta (circles only). Point values scatter by about 10%
 // about a smooth curve, because the finite element space cannot resolve a load at the scale of h.
 double line_force_at(const LineForce& f, double theta);

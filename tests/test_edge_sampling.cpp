@@ -9,6 +9,7 @@
 
 #include "active_set.hpp"
 #include "contact.hpp"
+#include "crosscheck.hpp"
 #include "dual_active_set.hpp"
 #include "dual_qp.hpp"
 #include "fields.hpp"
@@ -170,6 +171,23 @@ TEST(EdgeSampling, LineLoadIsPositiveAllRoundWithTheSquaresSymmetry) {
   // With f = 0 every bit of the obstacle's push is on the rim: the line load carries it all.
   EXPECT_NEAR(f.total, total_contact_force(p, r.lambda), 1e-12 * f.total);
   EXPECT_NEAR(f.mean, f.fourier[0], 1e-12 * f.mean);  // equal arcs: the mean is the constant term
+}
+
+// Nodal sampling does not sample the rim; its force, binned by angle, must still carry the whole
+// push, as a force per unit length of the circle, and keep the square's symmetries.
+TEST(EdgeSampling, BinnedLineLoadOfNodalSamplingKeepsTheForceAndTheSymmetry) {
+  const Problem p = paper_problem(64, SamplingKind::Nodes);
+  const ExactResult r = certified(p);
+  const int bins = kRimBins;
+  const LineForce f = binned_line_force(p, r.lambda, paper_scene().rim(), bins);
+  ASSERT_EQ(static_cast<int>(f.q.size()), bins);
+  EXPECT_NEAR(f.total, total_contact_force(p, r.lambda), 1e-12 * f.total);
+  for (int k = 0; k < bins; ++k) {
+    EXPECT_NEAR(f.q[k], f.q[(bins - k) % bins], 1e-9 * f.max) << "bin " << k;
+    EXPECT_NEAR(f.q[k], f.q[(k + bins / 4) % bins], 1e-9 * f.max) << "bin " << k;
+  }
+  EXPECT_NEAR(f.mean * 2 * M_PI * paper_scene().radius, f.total, 1e-12 * f.total);  // a force per unit length
+  EXPECT_THROW(binned_line_force(p, r.lambda, paper_scene().rim(), 12), std::invalid_argument);
 }
 
 TEST(EdgeSampling, CertificateHoldsWhereTouchingRowsAreDependent) {

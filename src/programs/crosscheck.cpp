@@ -1,4 +1,5 @@
-// crosscheck: writes results/crosscheck.md and .csv (and crosscheck_agreement.csv, crosscheck_timings.csv). Two scenes, each
+// crosscheck: writes results/crosscheck.md and .csv (and crosscheck_agreement.csv, crosscheck_rim.csv,
+// crosscheck_timings.csv). Two scenes, each
 // solved exactly on a sequence of grids: the paper's square by this code and by FreeFEM (HCT on gmsh
 // meshes with vertices on the contact circle), their Richardson limits side by side with the
 // verdict; and a clamped disk on a flat punch by FreeFEM, against its closed form.
@@ -121,12 +122,12 @@ Runs run_all(const Setup& u) {
   const Field phi = s.obstacle();
   for (int n : u.edge_ns) {
     std::cerr << "crosscheck: this code, edge sampling, n = " << n << "\n";
-    r.edge.push_back(solve_ours(n, SamplingSpec{SamplingKind::Edge, s.rim()}, phi, s.radius));
+    r.edge.push_back(solve_ours(n, SamplingSpec{SamplingKind::Edge, s.rim()}, phi, s.rim()));
   }
   for (int n : u.record_ns) {
     std::cerr << "crosscheck: this code, Gauss and nodal sampling, n = " << n << "\n";
-    r.gauss.push_back(solve_ours(n, SamplingSpec{SamplingKind::Gauss, {}}, phi, s.radius));
-    r.nodes.push_back(solve_ours(n, SamplingSpec{SamplingKind::Nodes, {}}, phi, s.radius));
+    r.gauss.push_back(solve_ours(n, SamplingSpec{SamplingKind::Gauss, {}}, phi, s.rim()));
+    r.nodes.push_back(solve_ours(n, SamplingSpec{SamplingKind::Nodes, {}}, phi, s.rim()));
     r.our_uniform.push_back(uniform_load_centre_ours(n));
   }
   return r;
@@ -167,6 +168,22 @@ void write_tables(const Setup& u, const Runs& runs) {
     }
   write_file_atomically(u.out + "/crosscheck.csv", csv.str());
   write_file_atomically(u.out + "/crosscheck_timings.csv", timings.str());
+  // The line load along a quarter of the rim (the square's symmetries give the rest), on each
+  // series' finest grid: FreeFEM's vertex forces, our edge points, our other samplings binned.
+  std::ostringstream rim;
+  rim << "# crosscheck: the contact force per unit length q(theta) on the rim, theta in [0, pi/2], on the finest grid "
+         "of each code\n# and sampling; bfs-gauss and bfs-nodes binned into " << kRimBins << " arcs of the circle. "
+         "Each q to the digits that\n# stay above the series' count times its round-off bound\ncode,cells,theta,q\n";
+  for (const auto* ser : {&runs.ff, &runs.edge, &runs.gauss, &runs.nodes}) {
+    if (ser->empty()) continue;
+    const CheckValues& r = ser->back();
+    const double bound = noise(r, r.line.max) * static_cast<double>(r.line.q.size());
+    for (std::size_t k = 0; k < r.line.q.size(); ++k)
+      if (r.line.theta[k] >= -1e-12 && r.line.theta[k] <= M_PI / 2 + 1e-12)
+        rim << r.code << ',' << r.cells << ',' << fmt("%.10g", r.line.theta[k]) << ','
+            << (r.line.q[k] == 0 ? std::string("0") : fmt_above(r.line.q[k], bound, 6, 'g')) << '\n';  // an arc no sample touches
+  }
+  write_file_atomically(u.out + "/crosscheck_rim.csv", rim.str());
 }
 
 void runs_table(std::ostream& md, const Runs& runs, const std::vector<const std::vector<CheckValues>*>& series,

@@ -114,8 +114,8 @@ CheckValues freefem_values(const nlohmann::json& j, int cells, double radius) {
     std::vector<double> theta, force;
     for (const auto& p : j.at("rim")) theta.push_back(p.at(0).get<double>()), force.push_back(p.at(1).get<double>());
     if (theta.size() >= 2) {
-      const LineForce line = line_force_from_point_forces(theta, force, radius);
-      v.q0 = line_force_fit(line, 0), v.q45 = line_force_fit(line, M_PI / 4);
+      v.line = line_force_from_point_forces(theta, force, radius);
+      v.q0 = line_force_fit(v.line, 0), v.q45 = line_force_fit(v.line, M_PI / 4);
     } else {
       v.q0 = v.q45 = NAN;
     }
