@@ -143,10 +143,12 @@ void point_obstacle(std::ostream& md, const Context& c) {
     const Problem p = make_problem(g, SamplingKind::Nodes, centre_spike(g, 0.01), uniform(0));
     const ExactResult r = solve_exact(p, ExactOptions{});
     const double P = p.sampling.weights.dot(r.lambda);
-    md << "| " << n << " | " << members(r.active) << " | " << fmt("%.4f", P) << " | " << fmt("%.7f", 0.01 / P) << " | "
-       << fmt("%+.2e", (0.01 / P - c.point) / c.point) << (r.converged ? "" : " (not converged)") << " |\n";
-    *c.point_rows << n << ',' << members(r.active) << ',' << fmt("%.4f", P) << ',' << fmt("%.7f", 0.01 / P) << ','
-             << fmt("%+.2e", (0.01 / P - c.point) / c.point) << ',' << (r.converged ? 1 : 0) << '\n';
+    const std::string force = fmt("%.4f", P), ratio = fmt("%.7f", 0.01 / P),
+                      gap = fmt("%+.2e", (0.01 / P - c.point) / c.point);
+    md << "| " << n << " | " << members(r.active) << " | " << force << " | " << ratio << " | " << gap
+       << (r.converged ? "" : " (not converged)") << " |\n";
+    *c.point_rows << n << ',' << members(r.active) << ',' << force << ',' << ratio << ',' << gap << ','
+                  << (r.converged ? 1 : 0) << '\n';
   }
 }
 

@@ -25,6 +25,14 @@ using namespace plate;
 
 namespace {
 
+struct Range {
+  double lo = INFINITY, hi = -INFINITY;
+  void add(double v) {
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+};
+
 // One file of numbers: key -> (value as printed, where it comes from).
 class Numbers {
  public:
@@ -34,6 +42,14 @@ class Numbers {
         throw std::logic_error("prose_numbers: a comma or newline in \"" + *s + "\"");
     if (!entries_.emplace(key, std::make_pair(value, source)).second)
       throw std::logic_error("prose_numbers: key " + key + " set twice");
+  }
+  // A range as the two keys key_min and key_max. An empty range (nothing matched) is an error,
+  // never an "inf" in the prose.
+  void put_range(const std::string& key, const Range& r, const std::function<std::string(double)>& format,
+                 const std::string& source) {
+    if (!(r.hi >= r.lo)) throw std::runtime_error("prose_numbers: nothing to take " + key + " from: " + source);
+    put(key + "_min", format(r.lo), source);
+    put(key + "_max", format(r.hi), source);
   }
   std::string csv(const std::string& what) const {
     std::ostringstream out;
@@ -45,14 +61,6 @@ class Numbers {
 
  private:
   std::map<std::string, std::pair<std::string, std::string>> entries_;
-};
-
-struct Range {
-  double lo = INFINITY, hi = -INFINITY;
-  void add(double v) {
-    lo = std::min(lo, v);
-    hi = std::max(hi, v);
-  }
 };
 
 Range range_of(const CsvTable& t, const std::vector<std::size_t>& rows,
@@ -80,21 +88,18 @@ void table_numbers(Numbers& num, const std::string& results) {
   const auto nonlinear = t.where([&](std::size_t r) { return t.text(r, "scheme") == "nonlinear"; });
   const std::string src = "results/table.csv";
   const Range over_tol = range_of(t, linear, [&](std::size_t r) { return t.number(r, "error") / t.number(r, "tolerance"); });
-  num.put("table.linear_error_over_tol_min", ratio(over_tol.lo), src + " linear rows: error / tolerance");
-  num.put("table.linear_error_over_tol_max", ratio(over_tol.hi), src + " linear rows: error / tolerance");
+  num.put_range("table.linear_error_over_tol", over_tol, ratio, src + " linear rows: error / tolerance");
   const Range linear_its = range_of(t, linear, [&](std::size_t r) { return t.number(r, "iterations"); });
   num.put("table.linear_iterations_max", count(linear_its.hi), src + " linear rows: iterations");
   const Range its = range_of(t, nonlinear, [&](std::size_t r) { return t.number(r, "iterations"); });
-  num.put("table.nonlinear_iterations_min", count(its.lo), src + " nonlinear rows: iterations");
-  num.put("table.nonlinear_iterations_max", count(its.hi), src + " nonlinear rows: iterations");
+  num.put_range("table.nonlinear_iterations", its, count, src + " nonlinear rows: iterations");
   // The linear scheme's error over the nonlinear scheme's, row pair by row pair (same sampling and OS).
   Range gain;
   for (std::size_t a : linear)
     for (std::size_t b : nonlinear)
       if (t.text(a, "sampling") == t.text(b, "sampling") && t.text(a, "tolerance") == t.text(b, "tolerance"))
         gain.add(t.number(a, "error") / t.number(b, "error"));
-  num.put("table.error_gain_min", ratio(gain.lo), src + " linear error / nonlinear error per sampling and OS");
-  num.put("table.error_gain_max", ratio(gain.hi), src + " linear error / nonlinear error per sampling and OS");
+  num.put_range("table.error_gain", gain, ratio, src + " linear error / nonlinear error per sampling and OS");
   Range g_over_n;
   for (std::size_t a : linear)
     for (std::size_t b : linear)
@@ -104,10 +109,8 @@ void table_numbers(Numbers& num, const std::string& results) {
   Range over_paper;
   for (std::size_t r : linear)
     if (t.text(r, "sampling") == "nodes") over_paper.add(t.number(r, "iterations") / t.number(r, "paper_iterations"));
-  num.put("table.nodes_over_paper_min", ratio(over_paper.lo), src + " nodes linear rows: iterations / paper_iterations");
-  num.put("table.nodes_over_paper_max", ratio(over_paper.hi), src + " nodes linear rows: iterations / paper_iterations");
-  num.put("table.gauss_over_nodes_iterations_min", ratio(g_over_n.lo), src + " linear iterations gauss / nodes per OS");
-  num.put("table.gauss_over_nodes_iterations_max", ratio(g_over_n.hi), src + " linear iterations gauss / nodes per OS");
+  num.put_range("table.nodes_over_paper", over_paper, ratio, src + " nodes linear rows: iterations / paper_iterations");
+  num.put_range("table.gauss_over_nodes_iterations", g_over_n, ratio, src + " linear iterations gauss / nodes per OS");
 }
 
 void table_fine_numbers(Numbers& num, const std::string& results) {
@@ -115,8 +118,7 @@ void table_fine_numbers(Numbers& num, const std::string& results) {
   const auto linear = t.where("scheme", "linear");
   const std::string src = "results/table_fine.csv";
   const Range err = range_of(t, linear, [&](std::size_t r) { return t.number(r, "error"); });
-  num.put("table_fine.linear_error_min", fmt("%.1e", err.lo), src + " linear rows: error");
-  num.put("table_fine.linear_error_max", fmt("%.1e", err.hi), src + " linear rows: error");
+  num.put_range("table_fine.linear_error", err, [](double v) { return fmt("%.1e", v); }, src + " linear rows: error");
 }
 
 // The cross-check's verdict on the square (results/crosscheck_agreement.csv): the tolerance to which
@@ -158,8 +160,7 @@ void bench_numbers(Numbers& num, const std::string& results) {
   });
   num.put("bench.ratio_n_from", std::to_string(kTimedFrom), "src/programs/prose_numbers.cpp kTimedFrom");
   const Range rr = range_of(t, with_ratio, [&](std::size_t r) { return t.number(r, "ratio"); });
-  num.put("bench.exact_ratio_min", fmt("%.1f", rr.lo), src + " exact rows: seconds / baseline seconds");
-  num.put("bench.exact_ratio_max", fmt("%.1f", rr.hi), src + " exact rows: seconds / baseline seconds");
+  num.put_range("bench.exact_ratio", rr, [](double v) { return fmt("%.1f", v); }, src + " exact rows: seconds / baseline seconds");
   const std::size_t finest = with_ratio.back(), largest = exact.back();
   num.put("bench.n_finest", t.text(finest, "n"), src + " largest n with a baseline");
   num.put("bench.exact_seconds_finest", fmt("%.3g", t.number(finest, "seconds")), src + " exact at that n");
@@ -174,8 +175,7 @@ void bench_numbers(Numbers& num, const std::string& results) {
   const auto base = t.where("solver", "baseline");
   for (std::size_t k = 1; k < base.size(); ++k)
     if (t.number(base[k], "n") >= 64) growth.add(t.number(base[k], "seconds") / t.number(base[k - 1], "seconds"));
-  num.put("bench.baseline_growth_min", fmt("%.2g", growth.lo), src + " baseline seconds(n) / seconds(n/2) for n >= 64");
-  num.put("bench.baseline_growth_max", fmt("%.2g", growth.hi), src + " baseline seconds(n) / seconds(n/2) for n >= 64");
+  num.put_range("bench.baseline_growth", growth, [](double v) { return fmt("%.2g", v); }, src + " baseline seconds(n) / seconds(n/2) for n >= 64");
   // The peers' time over ours on the same n, over the runs our certificate accepts.
   for (const char* peer : {"snesvi-rsls", "snesvi-ssls"}) {
     Range over;
@@ -184,10 +184,9 @@ void bench_numbers(Numbers& num, const std::string& results) {
       for (std::size_t e : exact)
         if (t.text(e, "n") == t.text(r, "n")) over.add(t.number(r, "seconds") / t.number(e, "seconds"));
     }
-    if (!(over.hi >= over.lo)) throw std::runtime_error(src + ": no certified run of " + peer);
     const std::string key = std::string("bench.") + (std::string(peer) == "snesvi-rsls" ? "rsls" : "ssls");
-    num.put(key + "_over_ours_min", fmt("%.2g", over.lo), src + " " + peer + " seconds / exact seconds (certified runs)");
-    num.put(key + "_over_ours_max", fmt("%.2g", over.hi), src + " " + peer + " seconds / exact seconds (certified runs)");
+    num.put_range(key + "_over_ours", over, [](double v) { return fmt("%.2g", v); },
+                  src + " " + peer + " seconds / exact seconds (certified runs)");
   }
 }
 

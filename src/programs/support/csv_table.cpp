@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 namespace plate {
-namespace {
-std::vector<std::string> split(const std::string& line) {
+
+std::vector<std::string> split_csv_line(const std::string& line) {
   std::vector<std::string> out;
   std::size_t start = 0;
   for (;;) {
@@ -16,7 +16,6 @@ std::vector<std::string> split(const std::string& line) {
     start = comma + 1;
   }
 }
-}  // namespace
 
 std::size_t CsvTable::column(const std::string& name) const {
   for (std::size_t i = 0; i < columns.size(); ++i)
@@ -66,10 +65,10 @@ CsvTable read_csv_table(const std::string& path) {
   while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#') continue;
     if (t.columns.empty()) {
-      t.columns = split(line);
+      t.columns = split_csv_line(line);
       continue;
     }
-    auto f = split(line);
+    auto f = split_csv_line(line);
     if (f.size() != t.columns.size())
       throw std::runtime_error(path + ": " + std::to_string(f.size()) + " fields where the header has " +
                                std::to_string(t.columns.size()) + ": \"" + line + "\"");

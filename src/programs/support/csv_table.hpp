@@ -24,6 +24,9 @@ struct CsvTable {
   std::vector<std::size_t> where(const std::string& name, const std::string& value) const;
 };
 
+// The fields of one line, split at every comma ("a,,b," gives four).
+std::vector<std::string> split_csv_line(const std::string& line);
+
 // The whole of s as a number; throws std::runtime_error with `where` (a file, a row) otherwise.
 double parse_number(const std::string& s, const std::string& where);
 

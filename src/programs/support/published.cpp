@@ -7,20 +7,11 @@
 
 #include <cmath>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 namespace plate {
 namespace {
 using Rows = std::vector<std::vector<std::string>>;
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream ss(line);
-  std::string field;
-  while (std::getline(ss, field, ',')) out.push_back(field);
-  return out;
-}
 
 // Data rows (header dropped) with at least `columns` fields.
 Rows read_rows(const std::string& path, std::size_t columns) {
@@ -35,7 +26,7 @@ Rows read_rows(const std::string& path, std::size_t columns) {
       header = false;
       continue;
     }
-    auto f = split(line);
+    auto f = split_csv_line(line);
     if (f.size() < columns) throw std::runtime_error(path + ": too few fields in \"" + line + "\"");
     rows.push_back(std::move(f));
   }
