@@ -1,5 +1,5 @@
 # Work-precision, from results/speed_vs_error.csv (written by build/bench, `make bench`).
-# Left: error in the centre deflection against the h -> 0 limit, versus solve time; labels give the
+# Left: error in the centre deflection against the continuum answer's max w (continuum_limits.csv), versus solve time; labels give the
 # cells n per side, and the exact solver's line is the discretisation error alone. Right: each
 # obstacle solve's time as a multiple of one unconstrained factorisation and solve on its grid.
 # Usage: gnuplot -e "fmt='svg'; out='results/speed_vs_error.svg'" paper/figures/speed_vs_error.gp
@@ -15,7 +15,7 @@ set logscale xy
 set format x '10^{%L}'
 set format y '10^{%L}'
 set xlabel 'solve time [s] (fine-grid assembly excluded)'
-set ylabel '|w_h(0.5,0.5) - w_{lim}|'
+set ylabel '|w_h(0.5,0.5) - max w of the continuum|'
 set key bottom left box opaque font ',10'
 set title 'error against time'
 plot data using (sel('exact', '', 9)):(sel('exact', '', 14)) with linespoints pt 7 lw 2 lc 1 title 'exact constraint', \

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "atomic_file.hpp"
+#include "continuum_limits.hpp"
 #include "exit_codes.hpp"
 #include "format.hpp"
 #include "freefem.hpp"
@@ -106,25 +107,6 @@ Run run_freefem_level(const FreeFem& ff, const Config& c, int n) {
   r.max_w = j.at("max_w").get<double>();
   r.force = j.at("total_contact_force").get<double>();
   return r;
-}
-
-std::map<std::string, double> read_limits(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read " + path + " (run make continuum first)");
-  std::map<std::string, double> m;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#' || line.rfind("quantity", 0) == 0) continue;
-    std::stringstream ss(line);
-    std::string q, sampling, steady, order, limit;
-    std::getline(ss, q, ','), std::getline(ss, sampling, ','), std::getline(ss, steady, ',');
-    std::getline(ss, order, ','), std::getline(ss, limit, ',');
-    std::string bar;
-    std::getline(ss, bar, ',');
-    if (sampling == "edge") m[q] = std::stod(limit), m[q + "_bar"] = std::stod(bar);
-  }
-  for (const char* k : {"max_w", "total_force"})
-    if (!m.count(k)) throw std::runtime_error(path + " has no edge-sampling limit for " + k);
-  return m;
 }
 
 std::string cell(const std::vector<Run>& runs, const Config& c, double Run::*err, double level, double floor) {
@@ -237,7 +219,7 @@ int main(int argc, char** argv) {
   app.footer(kExitStatusHelp);
   if (const int status = parse_options(app, argc, argv, "time_to_accuracy"); status >= 0) return status;
   try {
-    const auto lim = read_limits(limits);
+    const auto lim = read_continuum_limits(limits);
     const std::vector<Config> configs = {
         // The names are the figure's key (paper/figures/time_to_accuracy.gp lists the blocks in this order).
         {"exact edge (default)", "", 512, false, ""},
