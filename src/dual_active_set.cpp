@@ -25,9 +25,8 @@ struct Schur {
     const int old = static_cast<int>(rows.size()), m = old + static_cast<int>(fresh.size());
     rows.insert(rows.end(), fresh.begin(), fresh.end());
     G.conservativeResize(m, m);
-    constexpr int kBlock = 32;  // measured: per column, 32-64 right-hand sides cost a fifth of one
-    for (int first = old; first < m; first += kBlock) {
-      const int cols = std::min(kBlock, m - first);
+    for (int first = old; first < m; first += kGramBlock) {
+      const int cols = std::min(kGramBlock, m - first);
       Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(p.grid.unknowns(), cols);
       for (int k = 0; k < cols; ++k)
         for (RowSpMat::InnerIterator it(p.sampling.S, rows[first + k]); it; ++it) rhs(it.col(), k) = it.value();

@@ -46,10 +46,8 @@ void FixedSetSolver::add_columns(const std::vector<int>& nodes) {
   std::vector<int> missing;
   for (int q : nodes)
     if (!columns_.count(q)) missing.push_back(q);
-  // Solve in blocks: many right-hand sides at once run at BLAS-3 speed, but each costs a vector.
-  constexpr int kBlock = 16;
-  for (size_t first = 0; first < missing.size(); first += kBlock) {
-    const int cols = static_cast<int>(std::min<size_t>(kBlock, missing.size() - first));
+  for (size_t first = 0; first < missing.size(); first += kCorrectionBlock) {
+    const int cols = static_cast<int>(std::min<size_t>(kCorrectionBlock, missing.size() - first));
     Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(K_.rows(), cols);
     for (int k = 0; k < cols; ++k) {
       const int node = missing[first + k], dof = 4 * node;

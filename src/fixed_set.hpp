@@ -18,6 +18,10 @@ inline int members(const NodeSet& s) {
   return c;
 }
 
+// Right-hand sides per block of correction solves: many at once run at BLAS-3 speed, but each
+// costs a vector of the grid's size.
+constexpr int kCorrectionBlock = 16;
+
 class FixedSetSolver {
  public:
   // K, F: stiffness and load; phi: obstacle at the interior nodes. The node of value unknown 4p is p.

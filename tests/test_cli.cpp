@@ -235,3 +235,21 @@ TEST(Cli, DefaultsAreThePapersProblem) {
   EXPECT_EQ(std::stoi(config["--cells"].get<std::string>()), s.cells);
   std::filesystem::remove(json);
 }
+
+// The paper's table, run by a user: on its grid and with each of its tolerances OS, the linear
+// scheme's step rule is met while the error bound (D13) is not, so `plate` must say "not converged"
+// (status 3); the nonlinear scheme at the same settings must be certified (status 0).
+TEST(Cli, ThePapersLinearRunsAreRefusedAndItsNonlinearRunsCertified) {
+  const auto rows = plate::read_paper_table(std::string(PLATE_SOURCE_DIR) + "/reference/paper_table.csv");
+  ASSERT_FALSE(rows.empty());
+  for (const auto& row : rows)
+    for (const char* sampling : {"gauss", "nodes"}) {
+      // plate's --tol is relative to the size of the answer, the obstacle's height here.
+      std::ostringstream tol;
+      tol.precision(17);
+      tol << row.tolerance / plate::paper_scene().height;
+      const std::string args = "-q -n 4 --sampling " + std::string(sampling) + " --tol " + tol.str();
+      EXPECT_EQ(run_plate(args + " --scheme linear").status, 3) << args;
+      EXPECT_EQ(run_plate(args + " --scheme nonlinear").status, 0) << args;
+    }
+}

@@ -18,6 +18,7 @@
 #include "exit_codes.hpp"
 #include "format.hpp"
 #include "contact.hpp"
+#include "dual_active_set.hpp"
 #include "published.hpp"
 #include "richardson.hpp"
 
@@ -119,6 +120,8 @@ void table_fine_numbers(Numbers& num, const std::string& results) {
   const std::string src = "results/table_fine.csv";
   const Range err = range_of(t, linear, [&](std::size_t r) { return t.number(r, "error"); });
   num.put_range("table_fine.linear_error", err, [](double v) { return fmt("%.1e", v); }, src + " linear rows: error");
+  const Range over_tol = range_of(t, linear, [&](std::size_t r) { return t.number(r, "error") / t.number(r, "tolerance"); });
+  num.put_range("table_fine.linear_error_over_tol", over_tol, ratio, src + " linear rows: error / tolerance");
 }
 
 // The cross-check's verdict on the square (results/crosscheck_agreement.csv): the tolerance to which
@@ -168,6 +171,8 @@ void bench_numbers(Numbers& num, const std::string& results) {
   num.put("bench.n_largest", t.text(largest, "n"), src + " largest exact n");
   num.put("bench.exact_seconds_largest", fmt("%.3g", t.number(largest, "seconds")), src + " exact at the largest n");
   num.put("bench.exact_factorizations_largest", t.text(largest, "factorizations"), src + " exact at the largest n");
+  num.put("bench.nodal_finest_error", fmt("%.1e", t.number(largest, "error_limit")),
+          src + " exact at the largest n: error_limit (against the continuum answer)");
   num.put("bench.exact_grids_largest", count(std::log2(t.number(largest, "n") / t.number(exact.front(), "n")) + 1),
           src + " grids of the sequence from the smallest n");
   // What a grid costs against the one with twice the cell size: one factorisation and solve.
@@ -233,6 +238,22 @@ void version_numbers(Numbers& num, const std::string& results) {
 void model_numbers(Numbers& num) {
   num.put("model.nu", fmt("%g", kPoissonRatio), "src/contact.hpp kPoissonRatio");
   num.put("richardson.steady_spread", fmt("%g", kSteadySpread), "src/richardson.hpp kSteadySpread");
+  num.put("model.correction_block", count(kCorrectionBlock), "src/fixed_set.hpp kCorrectionBlock");
+  num.put("model.max_correction", count(ExactOptions{}.max_correction), "src/active_set.hpp ExactOptions::max_correction");
+  num.put("model.gram_block", count(kGramBlock), "src/dual_active_set.hpp kGramBlock");
+}
+
+// One run of the linear scheme (results/linear_history.csv): after its first step, how the true
+// error stands to the step the stopping rule sees, and the bound (D7) to the error.
+void linear_history_numbers(Numbers& num, const std::string& results) {
+  const CsvTable t = read_csv_table(results + "/linear_history.csv");
+  const std::string src = "results/linear_history.csv iterations >= 2";
+  const auto after_first = t.where([&](std::size_t r) { return t.number(r, "iteration") >= 2; });
+  const auto over = [&](const char* a, const char* b) {
+    return range_of(t, after_first, [&, a, b](std::size_t r) { return t.number(r, a) / t.number(r, b); });
+  };
+  num.put_range("history.error_over_step", over("error", "step"), ratio, src + ": error / step");
+  num.put_range("history.bound_over_error", over("bound", "error"), ratio, src + ": bound / error");
 }
 
 // Published constants the prose quotes, with their reference.
@@ -261,6 +282,7 @@ int main(int argc, char** argv) {
     crosscheck_numbers(fixed, results);
     hard_cases_numbers(fixed, results);
     continuum_numbers(fixed, results);
+    linear_history_numbers(fixed, results);
     published_numbers(fixed, reference);
     model_numbers(fixed);
     bench_numbers(machine, results);
