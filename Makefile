@@ -142,7 +142,10 @@ document: $(BUILD)/prose_numbers results/versions.csv | deps ## results/paper.ht
 # Every number the prose states, derived from the results above (paper/filters/numbers.lua fills them in).
 results/versions.csv: scripts/deps.sh | deps
 	@# A Debian epoch ("4:" in g++'s 4:12.2.0) is packaging, not the upstream version: drop it.
-	{ echo 'package,version'; dpkg-query -W -f='$${Package},$${Version}\n' $(VERSIONED) | sed 's/,[0-9]*:/,/'; } > $@.tmp && mv $@.tmp $@
+	@# The pipe hides dpkg-query's status, so the count of rows says whether every package was found.
+	{ echo 'package,version'; dpkg-query -W -f='$${Package},$${Version}\n' $(VERSIONED) | sed 's/,[0-9]*:/,/'; } > $@.tmp
+	@test $$(grep -c . $@.tmp) -eq $$(( $(words $(VERSIONED)) + 1 )) || { echo "versions.csv: dpkg-query did not find every package of VERSIONED" >&2; rm -f $@.tmp; exit 1; }
+	mv $@.tmp $@
 
 $(NUMBERS) &: $(BUILD)/prose_numbers $(RESULTS) $(CONTINUUM_DATA) $(CROSSCHECK) $(HARD_CASES) $(BENCH) results/versions.csv reference/plate_constants.csv
 	$(BUILD)/prose_numbers --out results

@@ -242,7 +242,6 @@ void convergence(std::ostream& md, const Setup& u, const Runs& runs,
     }
 }
 
-// The bar printed is the one the agreement rule uses: the bar, or the round-off bound if larger.
 // A limit and its bar as printed: to the digits round-off leaves alone, and never below it.
 std::string limit_value(const Extrapolation& e) { return fmt_above(e.limit, e.limit_noise, 10, 'g'); }
 std::string limit_bar(const Extrapolation& e) { return fmt_up(std::max(e.bar, e.bar_noise)); }

@@ -7,9 +7,9 @@
 
 namespace plate {
 
-// quantity -> limit, and quantity + "_bar" -> its error bar, for the rows of edge sampling. Throws
-// std::runtime_error naming the file when it is missing (run `make continuum` first) or lacks the
-// limit of max_w or total_force.
+// "max_w" and "total_force" -> the edge-sampling limit, and the same with "_bar" -> its error bar.
+// Throws std::runtime_error naming the file when it is missing (run `make continuum` first), lacks
+// either limit, or holds one that is not a number.
 std::map<std::string, double> read_continuum_limits(const std::string& path);
 
 }  // namespace plate
