@@ -163,6 +163,7 @@ std::string prose_of(std::string doc) {
 // Decimals, exponents and percentages are numbers; so are the words that stand for a measured size.
 TEST(Paper, EveryNumberInTheProseComesFromResults) {
   const std::string prose = prose_of(slurp(kRoot / "paper/paper.md"));
+  const auto around = [&](long at) { return prose.substr(std::max<long>(0, at - 40), 90); };
   std::set<double> data;
   for (const auto& [key, v] : plate::read_paper_numbers(kRoot / "reference/paper_numbers.csv")) data.insert(v);
   const std::regex number(R"((\d+\.\d+|\d(\.\d+)?e[-+]?\d+|\d+\s*%|\bper cent\b))");
@@ -171,16 +172,15 @@ TEST(Paper, EveryNumberInTheProseComesFromResults) {
     ++checked;
     const std::string n = it->str();
     const bool paper_data = n.find_first_of("e%p") == std::string::npos && data.count(std::stod(n));
-    const std::string context = prose.substr(std::max<long>(0, it->position() - 40), 90);
-    EXPECT_TRUE(paper_data) << "\"" << n << "\" in the prose has no source: \"" << context
+    EXPECT_TRUE(paper_data) << "\"" << n << "\" in the prose has no source: \"" << around(it->position())
                             << "\"; write it as {{key}} (build/prose_numbers) or say it without a number";
   }
   EXPECT_GT(checked, 0) << "the paper's own data (0.0625, 0.25) should be among the numbers seen";
   const std::regex vague(R"(\b(tens|hundreds|thousands|dozens?|twenty|thirty|forty|fifty|fortieth|several|a few dozen)\b)",
                          std::regex::icase);
   for (std::sregex_iterator it(prose.begin(), prose.end(), vague), end; it != end; ++it)
-    ADD_FAILURE() << "\"" << it->str() << "\" stands for a measured size: \""
-                  << prose.substr(std::max<long>(0, it->position() - 40), 90) << "\"; give the number as {{key}}";
+    ADD_FAILURE() << "\"" << it->str() << "\" stands for a measured size: \"" << around(it->position())
+                  << "\"; give the number as {{key}}";
   // Every key the prose names is one that build/prose_numbers writes.
   const std::string doc = slurp(kRoot / "paper/paper.md");
   const std::string written = slurp(kRoot / "results/numbers.csv") + slurp(kRoot / "results/numbers_machine.csv");

@@ -336,7 +336,7 @@ void peer_target(std::ostream& md, const std::vector<Outcome>& outcomes, const B
 }
 
 // Where the nodal grids stand against the continuum answer: the error that no solver removes.
-void centre_limit(std::ostream& md, const ByN& exact_at, const Continuum& L) {
+void against_continuum(std::ostream& md, const ByN& exact_at, const Continuum& L) {
   md << "\nThe error plotted against time (column error_limit of `speed_vs_error.csv`) is the distance of w(0.5, 0.5) "
         "from the continuum answer's max w = "
      << fmt("%.9g", L.w) << " +- " << fmt("%.1g", L.bar)
@@ -393,7 +393,7 @@ std::string report(const std::vector<Outcome>& outcomes, const ByN& exact_at, co
   exact_table(md, exact_at, baseline_at);
   peers_table(md, outcomes, exact_at, peer);
   penalty_table(md, outcomes, exact_at, baseline_at);
-  centre_limit(md, exact_at, c);
+  against_continuum(md, exact_at, c);
   targets(md, exact_at, baseline_at, l.max_exact, l.max_baseline);
   peer_target(md, outcomes, exact_at, l.max_rsls, l.max_ssls);
   return md.str();

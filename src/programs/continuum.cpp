@@ -48,7 +48,6 @@ const std::vector<Quantity> kQuantities = {
     {"fitted q(pi/4)", "q_fit_theta_pi_4", &Row::q45},
     {"max |m12|", "max_abs_m12", &Row::m12},
 };
-constexpr double kNu = kPoissonRatio;
 
 Row solve_one(SamplingKind kind, int n, const PaperScene& scene) {
   const Field phi = scene.obstacle(), no_load = [](double, double) { return 0.0; };
@@ -60,7 +59,7 @@ Row solve_one(SamplingKind kind, int n, const PaperScene& scene) {
   row.kind = kind, row.n = n, row.unknowns = p.grid.unknowns(), row.samples = p.sampling.size();
   row.edge_points = p.sampling.edge_size();
   row.certified = x.converged;
-  const NodalFields f = nodal_fields(p, x.w, phi, x.lambda, kNu);
+  const NodalFields f = nodal_fields(p, x.w, phi, x.lambda, kPoissonRatio);
   for (int k = 0; k < f.size(); ++k) row.max_w = std::max(row.max_w, f.w[k]), row.m12 = std::max(row.m12, std::abs(f.m12[k]));
   row.w_mid = evaluate(p.grid, x.w, 0.5, 0.125).w;
   row.w_diag = evaluate(p.grid, x.w, 0.25, 0.25).w;

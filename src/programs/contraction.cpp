@@ -20,12 +20,22 @@
 using namespace plate;
 
 namespace {
+// f = 1 and phi = -1: the plate never reaches the obstacle, so every step is linear.
+Problem no_contact_problem(int n, SamplingKind kind) {
+  return make_problem(make_grid(n), kind, [](double, double) { return -1.0; }, [](double, double) { return 1.0; });
+}
+Problem paper_problem(int n, SamplingKind kind, const Field& phi) {
+  return make_problem(make_grid(n), kind, phi, [](double, double) { return 0.0; });
+}
+
 // (D7) on the paper's own grid: at one eps, the linear scheme's step at every iteration, its true
 // distance to the exact penalised solution w_eps, and the bound step / (eps lambda_1h) that (D7)
 // puts on that distance (all at the nodes, in the maximum norm, as the paper's table measures).
 // Iterations are kept on a logarithmic grid, so that the file stays small.
 std::string linear_history(const Problem& p, double eps, double lambda, int max_iter) {
   const VectorXd w_eps = penalised_path(p, eps).back();
+  // The error falls into the round-off of w_eps; below 1e-13 of w the curve says nothing more.
+  const double floor = 1e-13 * max_nodal_abs(w_eps);
   std::ostringstream o;
   o << "# Written by build/contraction (make results): the linear scheme (5a) on the paper's grid, h = 1/"
     << p.grid.nx << ", nodal sampling, eps = " << fmt("%.0e", eps) << ", from w = 0; lambda_1h = " << fmt("%.4f", lambda)
@@ -39,8 +49,7 @@ std::string linear_history(const Problem& p, double eps, double lambda, int max_
     last = w;
     if (k < next_kept) return;
     next_kept = std::max(k + 1, static_cast<int>(k * 1.08));
-    // The error falls into the round-off of w_eps; below 1e-13 of w the curve says nothing more.
-    if (error < 1e-13 * max_nodal_abs(w_eps)) return;
+    if (error < floor) return;
     o << k << ',' << fmt("%.3e", step) << ',' << fmt("%.3e", error) << ',' << fmt("%.3e", step / (eps * lambda)) << '\n';
   };
   Cholesky chol;
@@ -78,10 +87,7 @@ int main(int argc, char** argv) {
     for (int n : grids)
       for (SamplingKind kind : {SamplingKind::Gauss, SamplingKind::Nodes}) {
         std::cerr << "contraction: h = 1/" << n << ", " << to_string(kind) << " sampling\n";
-        // f = 1 and phi = -1: the plate never reaches the obstacle, so every step is linear.
-        const Problem free = make_problem(make_grid(n), kind, [](double, double) { return -1.0; },
-                                          [](double, double) { return 1.0; });
-        const Problem paper = make_problem(make_grid(n), kind, paper_phi, [](double, double) { return 0.0; });
+        const Problem free = no_contact_problem(n, kind), paper = paper_problem(n, kind, paper_phi);
         const double lambda = smallest_eigenpair(free.K, free.M).lambda;
         for (double eps : epss) {
           const double q = sharp_contraction(lambda, eps);
@@ -111,10 +117,9 @@ int main(int argc, char** argv) {
     {
       std::cerr << "contraction: the linear scheme's history on the paper's grid\n";
       const int n = scene.cells;  // the paper's h = 1/4
-      const Problem paper = make_problem(make_grid(n), SamplingKind::Nodes, paper_phi, [](double, double) { return 0.0; });
-      const Problem free = make_problem(make_grid(n), SamplingKind::Nodes, [](double, double) { return -1.0; },
-                                        [](double, double) { return 1.0; });
-      history = linear_history(paper, 1e-6, smallest_eigenpair(free.K, free.M).lambda, 40000);
+      const Problem free = no_contact_problem(n, SamplingKind::Nodes);
+      history = linear_history(paper_problem(n, SamplingKind::Nodes, paper_phi), 1e-6,
+                               smallest_eigenpair(free.K, free.M).lambda, 40000);
     }
     std::filesystem::create_directories(out);
     write_file_atomically(out + "/linear_history.csv", history);

@@ -88,8 +88,8 @@ std::string ratio(double v) {
 // hides, and what the nonlinear scheme reaches.
 void table_numbers(Numbers& num, const std::string& results) {
   const CsvTable t = read_csv_table(results + "/table.csv");
-  const auto linear = t.where([&](std::size_t r) { return t.text(r, "scheme") == "linear"; });
-  const auto nonlinear = t.where([&](std::size_t r) { return t.text(r, "scheme") == "nonlinear"; });
+  const auto linear = t.where("scheme", "linear");
+  const auto nonlinear = t.where("scheme", "nonlinear");
   const std::string src = "results/table.csv";
   const Range over_tol = range_of(t, linear, [&](std::size_t r) { return t.number(r, "error") / t.number(r, "tolerance"); });
   num.put_range("table.linear_error_over_tol", over_tol, ratio, src + " linear rows: error / tolerance");
@@ -157,8 +157,7 @@ void hard_cases_numbers(Numbers& num, const std::string& results) {
 
 // The one number of the speed report that is no timing: how far the nodal grids' exact answer is
 // from the continuum answer. It goes to numbers.csv, which it leaves byte-identical on a rebuild.
-void bench_error_numbers(Numbers& num, const std::string& results) {
-  const CsvTable t = read_csv_table(results + "/speed_vs_error.csv");
+void bench_error_numbers(Numbers& num, const CsvTable& t) {
   const auto exact = t.where("solver", "exact");
   if (exact.empty()) throw std::runtime_error(t.path + ": no exact rows");
   num.put("bench.nodal_finest_error", fmt("%.1e", t.number(exact.back(), "error_limit")),
@@ -167,8 +166,7 @@ void bench_error_numbers(Numbers& num, const std::string& results) {
 
 // The speed report (results/speed_vs_error.csv): the exact solver against one factorisation, and
 // the peers against the exact solver. Timings: these go to the machine's file.
-void bench_numbers(Numbers& num, const std::string& results) {
-  const CsvTable t = read_csv_table(results + "/speed_vs_error.csv");
+void bench_numbers(Numbers& num, const CsvTable& t) {
   const std::string src = "results/speed_vs_error.csv";
   const auto exact = t.where("solver", "exact");
   // Grids that take milliseconds time the clock more than the solver: the ratios start at n = 32.
@@ -193,7 +191,7 @@ void bench_numbers(Numbers& num, const std::string& results) {
   const auto base = t.where("solver", "baseline");
   for (std::size_t k = 1; k < base.size(); ++k)
     if (t.number(base[k], "n") >= 64) growth.add(t.number(base[k], "seconds") / t.number(base[k - 1], "seconds"));
-  num.put_range("bench.baseline_growth", growth, [](double v) { return fmt("%.2g", v); }, src + " baseline seconds(n) / seconds(n/2) for n >= 64");
+  num.put_range("bench.baseline_growth", growth, ratio, src + " baseline seconds(n) / seconds(n/2) for n >= 64");
   // The peers' time over ours on the same n, over the runs our certificate accepts.
   for (const char* peer : {"snesvi-rsls", "snesvi-ssls"}) {
     Range over;
@@ -203,8 +201,7 @@ void bench_numbers(Numbers& num, const std::string& results) {
         if (t.text(e, "n") == t.text(r, "n")) over.add(t.number(r, "seconds") / t.number(e, "seconds"));
     }
     const std::string key = std::string("bench.") + (std::string(peer) == "snesvi-rsls" ? "rsls" : "ssls");
-    num.put_range(key + "_over_ours", over, [](double v) { return fmt("%.2g", v); },
-                  src + " " + peer + " seconds / exact seconds (certified runs)");
+    num.put_range(key + "_over_ours", over, ratio, src + " " + peer + " seconds / exact seconds (certified runs)");
   }
 }
 
@@ -302,8 +299,9 @@ int main(int argc, char** argv) {
     linear_history_numbers(fixed, results);
     published_numbers(fixed, reference);
     model_numbers(fixed);
-    bench_error_numbers(fixed, results);
-    bench_numbers(machine, results);
+    const CsvTable speed = read_csv_table(results + "/speed_vs_error.csv");
+    bench_error_numbers(fixed, speed);
+    bench_numbers(machine, speed);
     version_numbers(machine, results);
     write_file_atomically(out + "/numbers.csv", fixed.csv("numbers that rebuild byte for byte"));
     write_file_atomically(out + "/numbers_machine.csv",

@@ -33,21 +33,20 @@ Rows read_rows(const std::string& path, std::size_t columns) {
   return rows;
 }
 
-double to_double(const std::string& path, const std::string& s) { return parse_number(s, path); }
 }  // namespace
 
 std::vector<PublishedRow> read_paper_table(const std::string& path) {
   std::vector<PublishedRow> table;
   for (const auto& f : read_rows(path, 3))
-    table.push_back({to_double(path, f[0]), static_cast<int>(to_double(path, f[1])),
-                     static_cast<int>(to_double(path, f[2]))});
+    table.push_back({parse_number(f[0], path), static_cast<int>(parse_number(f[1], path)),
+                     static_cast<int>(parse_number(f[2], path))});
   if (table.empty()) throw std::runtime_error(path + ": no rows");
   return table;
 }
 
 std::map<std::string, double> read_paper_numbers(const std::string& path) {
   std::map<std::string, double> numbers;
-  for (const auto& f : read_rows(path, 2)) numbers[f[0]] = to_double(path, f[1]);
+  for (const auto& f : read_rows(path, 2)) numbers[f[0]] = parse_number(f[1], path);
   return numbers;
 }
 
