@@ -3,7 +3,7 @@
 BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
 DRIVERS := $(BUILD)/table $(BUILD)/fig1 $(BUILD)/fig2 $(BUILD)/contraction $(BUILD)/hard_cases $(BUILD)/bench $(BUILD)/peer_snesvi \
-           $(BUILD)/micro_bench $(BUILD)/continuum $(BUILD)/time_to_accuracy $(BUILD)/prose_numbers
+           $(BUILD)/micro_bench $(BUILD)/continuum $(BUILD)/time_to_accuracy $(BUILD)/prose_numbers $(BUILD)/compare_tables
 BINS  := $(BUILD)/plate $(BUILD)/crosscheck $(BUILD)/plate_tests $(DRIVERS)
 PAPER_NUMBERS := reference/paper_numbers.csv
 
@@ -35,7 +35,7 @@ VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread libmuparser-d
 # What each step makes and about how long it takes here (2 cores), said before it starts.
 say = @printf '\n== make: %s (about %s)\n' $(1) $(2)
 
-.PHONY: all test deps build results paper document crosscheck hard-cases continuum bench clean help FORCE
+.PHONY: all test deps build results paper document crosscheck hard-cases continuum bench check-results clean help FORCE
 
 all: build results continuum crosscheck hard-cases bench paper ## build, then every result, figure, benchmark and the document (about 30 min from scratch)
 
@@ -161,6 +161,35 @@ endef
 results/paper.html: $(PAPER_INPUTS) | deps
 	$(call say,"results/paper.html","10 s")
 	$(render_paper)
+
+# Each driver that writes a deterministic table, its files (timings are not), rebuilt into a scratch
+# folder and compared with the committed ones number by number (build/compare_tables: one unit in the
+# last printed digit), never byte for byte. `make test` runs the drivers that take seconds the same way.
+CHECKED_table       := table.csv table.md table_fine.csv table_fine.md
+CHECKED_contraction := contraction.md contraction.csv linear_history.csv
+CHECKED_fig1        := fig1_points.csv fig1_surface.dat fig1_contact.dat
+CHECKED_fig2        := fig2.csv fig2_mesh.csv fig2_fit.md fig2_mesh.md
+CHECKED_continuum   := continuum.md continuum.csv continuum_error.csv continuum_q.csv continuum_answer.md continuum_limits.csv
+CHECKED_crosscheck  := crosscheck.md crosscheck.csv crosscheck_agreement.csv crosscheck_rim.csv
+CHECK_DIR := $(BUILD)/check-results
+
+check-results: build ## rebuild every deterministic table into build/check-results and compare it with results/ (about 15 min)
+	$(call say,"check-results: table contraction fig1 fig2 continuum crosscheck rebuilt and compared with results/","15 min")
+	@rm -rf $(CHECK_DIR); status=0; \
+	for d in table contraction fig1 fig2 continuum crosscheck; do \
+	  mkdir -p $(CHECK_DIR)/$$d; \
+	  extra=; [ $$d = crosscheck ] && extra="--work $(CHECK_DIR)/crosscheck-work"; \
+	  echo "== $$d"; \
+	  $(BUILD)/$$d --out $(CHECK_DIR)/$$d $$extra > $(CHECK_DIR)/$$d.log 2>&1 \
+	    || { echo "$$d failed (exit $$?); its output is in $(CHECK_DIR)/$$d.log"; status=1; continue; }; \
+	  case $$d in \
+	    table) files="$(CHECKED_table)";; contraction) files="$(CHECKED_contraction)";; fig1) files="$(CHECKED_fig1)";; \
+	    fig2) files="$(CHECKED_fig2)";; continuum) files="$(CHECKED_continuum)";; crosscheck) files="$(CHECKED_crosscheck)";; \
+	  esac; \
+	  $(BUILD)/compare_tables --expected results --rebuilt $(CHECK_DIR)/$$d $$files || status=1; \
+	done; \
+	if [ $$status = 0 ]; then echo "check-results: every table agrees with results/"; \
+	else echo "check-results: some tables differ (above)"; exit 1; fi
 
 clean: ## remove build products (not results/)
 	rm -rf $(BUILD)

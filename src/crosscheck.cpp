@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 #include "active_set.hpp"
@@ -10,6 +11,7 @@
 #include "contact.hpp"
 #include "line_force.hpp"
 #include "norms.hpp"
+#include "roundoff.hpp"
 #include "stopwatch.hpp"
 
 namespace plate {
@@ -30,6 +32,15 @@ CheckValues solve_ours(int n, const SamplingSpec& spec, const Field& phi, const 
   for (const ExactLevel& l : x.levels) v.iterations += l.pdas_iterations;
   v.max_w = max_nodal_abs(x.w);
   for (const CheckPoint& c : kCheckPoints) v.w_at.push_back(evaluate(p.grid, x.w, c.x, c.y).w);
+  const SolutionRoundoff roundoff(p, x.w, x.lambda);
+  const Grid& g = p.grid;
+  Eigen::MatrixXd outputs(g.unknowns(), 1 + std::size(kCheckPoints));
+  int top = 0;  // the unknown of max |w|: a nodal value
+  for (int i = 0; i < g.unknowns(); i += 4)
+    if (std::abs(x.w[i]) > std::abs(x.w[top])) top = i;
+  outputs.col(0) = roundoff.unknown(top);
+  for (size_t k = 0; k < std::size(kCheckPoints); ++k) outputs.col(1 + k) = roundoff.point_value(kCheckPoints[k].x, kCheckPoints[k].y);
+  v.noise_w = roundoff.of(outputs);
   v.force = total_contact_force(p, x.lambda);
   v.mean_line = v.force / (2 * M_PI * radius);  // with f = 0 the whole push is on the rim
   v.line = line_force(p, x.lambda);

@@ -31,6 +31,8 @@ struct CheckValues {
   int iterations = 0;      // active-set iterations
   double max_w = 0, force = 0;
   std::vector<double> w_at;  // at the check points, in order
+  // Ours: the round-off estimates of max w and of w at the check points (roundoff.hpp); empty for FreeFEM.
+  std::vector<double> noise_w;  // max w first, then the check points
   double mean_line = 0, q0 = 0, q45 = 0;  // line load on the rim: mean, and fitted q(0), q(pi/4)
   // The line load itself: at the edge points (edge sampling), at the circle's vertices (FreeFEM), or
   // binned by angle (the other samplings; q0 and q45 stay NaN for those).

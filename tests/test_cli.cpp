@@ -18,6 +18,7 @@
 
 #include "paper_case.hpp"
 #include "run_program.hpp"
+#include "scratch.hpp"
 
 namespace {
 struct PlateRun {
@@ -30,8 +31,10 @@ PlateRun run_plate(const std::string& args) {
   return {c.status, c.output};
 }
 
+// Every file a test here writes goes into one folder, removed when the test's process ends.
 std::string temp_path(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("plate_cli_test_" + name)).string();
+  static const plate::Scratch scratch("cli");
+  return scratch.path(name);
 }
 
 // A summary `plate` wrote; an empty object if there is none or it is not JSON (the checks then fail).
@@ -91,7 +94,7 @@ class CliBadInput : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(CliBadInput, ExitsWithItsStatusAndAMessageNamingTheInput) {
   const BadInput& c = GetParam();
-  const std::string json = temp_path("bad_" + std::to_string(getpid()) + ".json");  // ctest runs cases in parallel
+  const std::string json = temp_path("bad.json");
   std::filesystem::remove(json);
   const bool own_json = c.args.find("--json") == std::string::npos;
   const PlateRun r = run_plate(c.args + (own_json ? " -q --json " + json : " -q"));
@@ -101,7 +104,7 @@ TEST_P(CliBadInput, ExitsWithItsStatusAndAMessageNamingTheInput) {
   if (c.status == 3) {  // not converged: the outputs are written, and say so
     const auto js = read_json(json);
     EXPECT_EQ(js.value("converged", true), false) << js.dump();
-    const std::string csv = temp_path("bad_" + std::to_string(getpid()) + ".csv");
+    const std::string csv = temp_path("bad.csv");
     ASSERT_EQ(run_plate(c.args + " -q --csv " + csv).status, 3);
     std::ifstream in(csv);
     std::string first;
@@ -127,7 +130,7 @@ TEST(Cli, BadInputListIsReadWhole) {
 }
 
 TEST(Cli, InterruptedRunLeavesNoFileBehind) {
-  const std::string dir = (std::filesystem::temp_directory_path() / "plate_cli_interrupt").string();
+  const std::string dir = temp_path("interrupt");
   // n = 256 takes over a minute: the signal arrives mid-solve.
   const plate::Interrupted r = plate::interrupt_run(PLATE_EXE, {"-n", "256", "-q"}, dir, 500);
   EXPECT_EQ(r.status, 128 + SIGINT);

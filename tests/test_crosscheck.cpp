@@ -15,6 +15,7 @@
 #include "disk_punch.hpp"
 #include "freefem.hpp"
 #include "line_force.hpp"
+#include "scratch.hpp"
 #include "paper_case.hpp"
 #include "run_program.hpp"
 
@@ -24,10 +25,10 @@ namespace {
 const std::string kRef = std::string(PLATE_SOURCE_DIR) + "/reference";
 const std::string kEdp = kRef + "/contact_hct.edp";
 
+// FreeFEM's and gmsh's files, removed when the test's process ends.
 std::string work_dir() {
-  const auto d = std::filesystem::temp_directory_path() / ("plate_crosscheck_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(d);
-  return d.string();
+  static const Scratch scratch("crosscheck");
+  return scratch.dir().string();
 }
 
 // FreeFEM on levels n of a .geo (4 n cells per quarter circle), the paper's obstacle.
@@ -97,7 +98,6 @@ TEST(CrossCode, FreeFemAndThisCodeAgreeOnThePapersSquareToTheTargets) {
   const Agreement g = compare_limits(a, b);
   EXPECT_TRUE(g.agree) << kCheckPoints[1].name;
   EXPECT_LT(g.tolerance, 1e-5 * std::abs(b.limit)) << kCheckPoints[1].name;
-  std::filesystem::remove_all(work_dir());
 }
 
 TEST(CrossCode, FreeFemReproducesTheDiskOnAFlatPunch) {
@@ -115,7 +115,6 @@ TEST(CrossCode, FreeFemReproducesTheDiskOnAFlatPunch) {
   EXPECT_NEAR(f.limit, exact.total_force(), f.bar);
   EXPECT_LT(w.bar, 1e-3 * exact.centre());  // and the bars are not vacuous
   EXPECT_LT(f.bar, 1e-3 * exact.total_force());
-  std::filesystem::remove_all(work_dir());
 }
 
 TEST(CrossCode, FreeFemReproducesTheClampedSquareUnderUniformLoad) {
@@ -125,7 +124,6 @@ TEST(CrossCode, FreeFemReproducesTheClampedSquareUnderUniformLoad) {
   // Within its discretisation error (the last increment) plus the published value's rounding.
   EXPECT_NEAR(w1, published, std::abs(w1 - w0) + 5e-9);
   EXPECT_LT(std::abs(w1 - w0), 1e-3 * published);  // and that error is small
-  std::filesystem::remove_all(work_dir());
 }
 
 TEST(CrossCode, PointForcesOnTheCircleGiveTheLineLoad) {
@@ -174,5 +172,4 @@ TEST(CrossCode, TheFreeFemScriptRefusesBadArgumentsByName) {
   EXPECT_NE(run.status, 0) << run.output;
   EXPECT_TRUE(run.output.find("not good") != std::string::npos || run.output.find("fewer points") != std::string::npos)
       << run.output;
-  std::filesystem::remove_all(dir);
 }

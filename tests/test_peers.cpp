@@ -10,17 +10,18 @@
 #include "measurements.hpp"
 #include "paper_case.hpp"
 #include "run_program.hpp"
+#include "scratch.hpp"
 
 using namespace plate;
 
 namespace {
 Measurements run_peer(int n, const std::string& method) {
-  const std::string out = std::filesystem::temp_directory_path() / ("plate_peer_" + std::to_string(::getpid()) + method);
+  const Scratch scratch("peer");
+  const std::string out = scratch.path(method);
   const Captured run = run_captured("'" BUILD_DIR "/peer_snesvi' -n " + std::to_string(n) + " --method " + method +
                                     " --reference '" PLATE_SOURCE_DIR "/reference' --out '" + out + "' 2>&1");
   EXPECT_EQ(run.status, 0) << run.output;
   const Measurements a = read_measurements(out);
-  std::filesystem::remove(out);
   return a;
 }
 }  // namespace

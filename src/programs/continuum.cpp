@@ -17,6 +17,7 @@
 #include "line_force.hpp"
 #include "published.hpp"
 #include "richardson.hpp"
+#include "roundoff.hpp"
 #include "verdict.hpp"
 #include "stopwatch.hpp"
 
@@ -30,6 +31,10 @@ struct Row {
   bool certified = false;
   double max_w = 0, w_mid = 0, w_diag = 0, force = 0, mean_line = 0, q0 = NAN, q45 = NAN, m12 = 0, seconds = 0;
   LineForce line;
+  // What round-off may change in each of the above: the deflections and the moment as roundoff.hpp
+  // estimates; the forces, read off the multipliers, the worst case u n^3 (exact_solve_roundoff).
+  double noise_max_w = 0, noise_w_mid = 0, noise_w_diag = 0, noise_force = 0, noise_mean_line = 0, noise_q0 = 0,
+         noise_q45 = 0, noise_m12 = 0;
 };
 
 // The quantities a reader asks for, each with how it is read from a row.
@@ -37,16 +42,17 @@ struct Quantity {
   const char* name;
   const char* column;
   double Row::*field;
+  double Row::*noise;
 };
 const std::vector<Quantity> kQuantities = {
-    {"max w", "max_w", &Row::max_w},
-    {"w(0.5, 0.125)", "w_0.5_0.125", &Row::w_mid},
-    {"w(0.25, 0.25)", "w_0.25_0.25", &Row::w_diag},
-    {"total force", "total_force", &Row::force},
-    {"mean line force", "mean_line_force", &Row::mean_line},
-    {"fitted q(0)", "q_fit_theta_0", &Row::q0},
-    {"fitted q(pi/4)", "q_fit_theta_pi_4", &Row::q45},
-    {"max |m12|", "max_abs_m12", &Row::m12},
+    {"max w", "max_w", &Row::max_w, &Row::noise_max_w},
+    {"w(0.5, 0.125)", "w_0.5_0.125", &Row::w_mid, &Row::noise_w_mid},
+    {"w(0.25, 0.25)", "w_0.25_0.25", &Row::w_diag, &Row::noise_w_diag},
+    {"total force", "total_force", &Row::force, &Row::noise_force},
+    {"mean line force", "mean_line_force", &Row::mean_line, &Row::noise_mean_line},
+    {"fitted q(0)", "q_fit_theta_0", &Row::q0, &Row::noise_q0},
+    {"fitted q(pi/4)", "q_fit_theta_pi_4", &Row::q45, &Row::noise_q45},
+    {"max m12", "max_abs_m12", &Row::m12, &Row::noise_m12},
 };
 
 Row solve_one(SamplingKind kind, int n, const PaperScene& scene) {
@@ -55,12 +61,16 @@ Row solve_one(SamplingKind kind, int n, const PaperScene& scene) {
   const Problem p = make_problem(make_grid(n), SamplingSpec{kind, scene.rim()}, phi, no_load);
   const ExactResult x = solve_exact(p, phi, no_load, ExactOptions{});
   Row row;
-  row.seconds = seconds_since(t0);
   row.kind = kind, row.n = n, row.unknowns = p.grid.unknowns(), row.samples = p.sampling.size();
   row.edge_points = p.sampling.edge_size();
   row.certified = x.converged;
   const NodalFields f = nodal_fields(p, x.w, phi, x.lambda, kPoissonRatio);
-  for (int k = 0; k < f.size(); ++k) row.max_w = std::max(row.max_w, f.w[k]), row.m12 = std::max(row.m12, std::abs(f.m12[k]));
+  int top = 0, twist = 0;  // the nodes of max w and of max |m12|
+  for (int k = 0; k < f.size(); ++k) {
+    if (f.w[k] > f.w[top]) top = k;
+    if (std::abs(f.m12[k]) > std::abs(f.m12[twist])) twist = k;
+  }
+  row.max_w = f.w[top], row.m12 = std::abs(f.m12[twist]);
   row.w_mid = evaluate(p.grid, x.w, 0.5, 0.125).w;
   row.w_diag = evaluate(p.grid, x.w, 0.25, 0.25).w;
   row.force = total_contact_force(p, x.lambda);
@@ -68,19 +78,24 @@ Row solve_one(SamplingKind kind, int n, const PaperScene& scene) {
   row.line = line_force(p, x.lambda);
   // The smoothed line load: point values scatter about it by some 10% (see line_force.hpp).
   if (!row.line.empty()) row.q0 = line_force_fit(row.line, 0), row.q45 = line_force_fit(row.line, M_PI / 4);
+  row.seconds = seconds_since(t0);
+
+  const SolutionRoundoff roundoff(p, x.w, x.lambda);
+  const Grid& g = p.grid;
+  const auto node_dof = [&](int k, Component c) { return g.dof(k % (g.nx + 1), k / (g.nx + 1), c); };
+  Eigen::MatrixXd outputs(g.unknowns(), 4);
+  outputs << roundoff.unknown(node_dof(top, kW)), roundoff.point_value(0.5, 0.125), roundoff.point_value(0.25, 0.25),
+      roundoff.unknown(node_dof(twist, kWxy)) * (1 - kPoissonRatio);
+  const std::vector<double> noise = roundoff.of(outputs);
+  row.noise_max_w = noise[0], row.noise_w_mid = noise[1], row.noise_w_diag = noise[2], row.noise_m12 = noise[3];
+  row.noise_force = exact_solve_roundoff(n, row.force), row.noise_mean_line = exact_solve_roundoff(n, row.mean_line);
+  row.noise_q0 = exact_solve_roundoff(n, row.q0), row.noise_q45 = exact_solve_roundoff(n, row.q45);
   if (!x.converged) std::cerr << "continuum: " << to_string(kind) << " n = " << n << ": " << x.message << "\n";
   return row;
 }
 
 std::string num(double v, double noise) { return std::isfinite(v) ? fmt_above(v, noise, 10, 'g') : ""; }
-std::string num(const Row& r, double v) { return num(v, exact_solve_roundoff(r.n, v)); }
-
-std::vector<double> noise_column(const std::vector<Row>& rows, SamplingKind kind, double Row::*field) {
-  std::vector<double> z;
-  for (const Row& r : rows)
-    if (r.kind == kind) z.push_back(exact_solve_roundoff(r.n, r.*field));
-  return z;
-}
+std::string num(const Row& r, const Quantity& q) { return num(r.*q.field, r.*q.noise); }
 
 std::vector<double> column(const std::vector<Row>& rows, SamplingKind kind, double Row::*field) {
   std::vector<double> v;
@@ -95,14 +110,14 @@ std::string csv(const std::vector<Row>& rows) {
        "# grids, three samplings of the constraint; made by build/continuum. max_w and max_abs_m12 over the grid\n"
        "# nodes (nu = 0.3); mean_line_force = total_force / (2 pi r); q_fit: the line load on the rim\n"
        "# fitted by cos(4 k theta), k = 0..3, at theta = 0 and pi/4 (edge only). Digits are printed down to\n"
-       "# 10 times the round-off bound, u n^3 relative; none that another machine could change\n"
+       "# 10 times each value's round-off estimate (w and m12: src/roundoff.hpp; forces: u n^3 relative)\n"
        "sampling,n,unknowns,samples,edge_points,certified";
   for (const Quantity& q : kQuantities) o << "," << q.column;
   o << "\n";
   for (const Row& r : rows) {
     o << to_string(r.kind) << "," << r.n << "," << r.unknowns << "," << r.samples << "," << r.edge_points << ","
       << (r.certified ? 1 : 0);
-    for (const Quantity& q : kQuantities) o << "," << num(r, r.*q.field);
+    for (const Quantity& q : kQuantities) o << "," << num(r, q);
     o << "\n";
   }
   return o.str();
@@ -150,7 +165,7 @@ std::string markdown(const Study& s) {
     for (const Row& r : s.rows) {
       if (r.kind != k) continue;
       o << "| " << r.n << " | " << r.unknowns << " | " << r.samples << " | " << (r.certified ? "yes" : "**no**");
-      for (const Quantity& q : kQuantities) o << " | " << (std::isfinite(r.*q.field) ? num(r, r.*q.field) : "n/a");
+      for (const Quantity& q : kQuantities) o << " | " << (std::isfinite(r.*q.field) ? num(r, q) : "n/a");
       o << " |\n";
     }
     o << "\n";
@@ -180,7 +195,7 @@ std::string limits(const Study& s) {
        "# steady: 1 if the last two observed orders differ by at most " << fmt("%g", kSteadySpread)
     << ", and then limit is Richardson's and bar its\n"
        "# distance to the previous Richardson limit; 0: limit is the finest value and bar its last increment.\n"
-       "# A bar within 10 times the round-off bound (u n^3 relative) is that bound instead\n"
+       "# A bar within 10 times the round-off estimate of the limit (src/roundoff.hpp) is that estimate instead\n"
        "quantity,sampling,steady,order,limit,bar\n";
   for (const Quantity& q : kQuantities)
     for (SamplingKind k : kKinds) {
@@ -202,8 +217,8 @@ std::string errors(const Study& s) {
   const double w = W.limit, f = F.limit;
   for (const Row& r : s.rows)
     o << to_string(r.kind) << "," << r.n << "," << fmt("%.10g", 1.0 / r.n) << ","
-      << fmt_above(std::abs(r.max_w - w) / w, (exact_solve_roundoff(r.n, r.max_w) + W.limit_noise) / w, 5) << ","
-      << fmt_above(std::abs(r.force - f) / f, (exact_solve_roundoff(r.n, r.force) + F.limit_noise) / f, 5) << "\n";
+      << fmt_above(std::abs(r.max_w - w) / w, (r.noise_max_w + W.limit_noise) / w, 5) << ","
+      << fmt_above(std::abs(r.force - f) / f, (r.noise_force + F.limit_noise) / f, 5) << "\n";
   return o.str();
 }
 
@@ -261,7 +276,7 @@ int main(int argc, char** argv) {
       }
     for (const Quantity& q : kQuantities)
       for (SamplingKind k : kKinds)
-        s.fits[{k, q.name}] = extrapolate(column(s.rows, k, q.field), noise_column(s.rows, k, q.field));
+        s.fits[{k, q.name}] = extrapolate(column(s.rows, k, q.field), column(s.rows, k, q.noise));
     write_file_atomically(out + "/continuum.csv", csv(s.rows));
     write_file_atomically(out + "/continuum_error.csv", errors(s));
     write_file_atomically(out + "/continuum_q.csv", line_loads(s));

@@ -3,6 +3,8 @@
 // sharp factor 1/(1 + eps lambda_1h), its square, and the paper's rho from (6). `contraction --help` lists the options.
 #include <CLI/CLI.hpp>
 
+#include <cfloat>
+
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -34,8 +36,10 @@ Problem paper_problem(int n, SamplingKind kind, const Field& phi) {
 // Iterations are kept on a logarithmic grid, so that the file stays small.
 std::string linear_history(const Problem& p, double eps, double lambda, int max_iter) {
   const VectorXd w_eps = penalised_path(p, eps).back();
-  // The error falls into the round-off of w_eps; below 1e-13 of w the curve says nothing more.
-  const double floor = 1e-13 * max_nodal_abs(w_eps);
+  // Round-off on this grid, measured between thread counts and OpenBLAS's kernels: a step moved by
+  // up to 0.6 u max|w|, an error (which carries w_eps's own round-off) by up to 9 u max|w|; ten times
+  // each is taken. A row whose step or error is within ten times that says nothing more: the curve ends.
+  const double step_noise = 10 * DBL_EPSILON * max_nodal_abs(w_eps), error_noise = 10 * step_noise;
   std::ostringstream o;
   o << "# Written by build/contraction (make results): the linear scheme (5a) on the paper's grid, h = 1/"
     << p.grid.nx << ", nodal sampling, eps = " << fmt("%.0e", eps) << ", from w = 0; lambda_1h = " << fmt("%.4f", lambda)
@@ -49,8 +53,9 @@ std::string linear_history(const Problem& p, double eps, double lambda, int max_
     last = w;
     if (k < next_kept) return;
     next_kept = std::max(k + 1, static_cast<int>(k * 1.08));
-    if (error < floor) return;
-    o << k << ',' << fmt("%.3e", step) << ',' << fmt("%.3e", error) << ',' << fmt("%.3e", step / (eps * lambda)) << '\n';
+    if (error < 10 * error_noise || step < 10 * step_noise) return;
+    o << k << ',' << fmt_above(step, step_noise, 4) << ',' << fmt_above(error, error_noise, 4) << ','
+      << fmt_above(step / (eps * lambda), step_noise / (eps * lambda), 4) << '\n';
   };
   Cholesky chol;
   chol.analyze(p.K);

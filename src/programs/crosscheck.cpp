@@ -47,9 +47,13 @@ struct Runs {
   std::vector<double> ff_uniform, our_uniform;
 };
 
-// A value's round-off bound, by the code that computed it.
+// A value's round-off, by the code that computed it: FreeFEM's bound, or ours for a force.
 double noise(const CheckValues& r, double v) {
   return r.code == kFreefemCode ? freefem_roundoff(r.h, v) : exact_solve_roundoff(r.cells, v);
+}
+// A deflection of ours (k = 0: max w; k >= 1: check point k - 1) has its own estimate (roundoff.hpp).
+double noise_w(const CheckValues& r, int k) {
+  return r.noise_w.empty() ? noise(r, k == 0 ? r.max_w : r.w_at.at(k - 1)) : r.noise_w.at(k);
 }
 
 struct Quantity {
@@ -57,13 +61,16 @@ struct Quantity {
   std::function<double(const CheckValues&)> get;
   double target = 0;  // the relative tolerance the two limits are to be checked to (0: none)
   bool held = false;  // a point on the contact circle: both codes hold w = R there, so nothing to compare
+  int deflection = -1;  // the index into noise_w of a deflection; -1: a force
+  double noise(const CheckValues& r) const { return deflection >= 0 ? noise_w(r, deflection) : ::noise(r, get(r)); }
 };
 std::vector<Quantity> quantities(const PaperScene& scene) {
-  std::vector<Quantity> q = {{"max w", "max_w", [](const CheckValues& r) { return r.max_w; }, 1e-6}};
+  std::vector<Quantity> q = {{"max w", "max_w", [](const CheckValues& r) { return r.max_w; }, 1e-6, false, 0}};
   for (int k = 0; k < 3; ++k) {
     const CheckPoint& c = kCheckPoints[k];
     q.push_back({c.name, fmt("w_%g", c.x) + fmt("_%g", c.y), [k](const CheckValues& r) { return r.w_at.at(k); }});
     q.back().held = std::abs(std::hypot(c.x - scene.cx, c.y - scene.cy) - scene.radius) <= 1e-12;
+    q.back().deflection = 1 + k;
   }
   q.push_back({"total contact force", "total_force", [](const CheckValues& r) { return r.force; }, 1e-5});
   q.push_back({"mean line force", "mean_line_force", [](const CheckValues& r) { return r.mean_line; }});
@@ -72,13 +79,14 @@ std::vector<Quantity> quantities(const PaperScene& scene) {
   return q;
 }
 
-std::string num(const CheckValues& r, double v, int digits = 10) {
-  return std::isfinite(v) ? fmt_above(v, noise(r, v), digits, 'g') : "n/a";
+std::string num(double v, double noise, int digits = 10) {
+  return std::isfinite(v) ? fmt_above(v, noise, digits, 'g') : "n/a";
 }
+std::string num(const CheckValues& r, double v) { return num(v, noise(r, v)); }
 
 Extrapolation fit(const std::vector<CheckValues>& runs, const Quantity& q) {
   std::vector<double> v, z;
-  for (const auto& r : runs) v.push_back(q.get(r)), z.push_back(noise(r, q.get(r)));
+  for (const auto& r : runs) v.push_back(q.get(r)), z.push_back(q.noise(r));
   return extrapolate(v, z);
 }
 
@@ -160,7 +168,7 @@ void write_tables(const Setup& u, const Runs& runs) {
           << (r.certified ? 1 : 0) << "," << r.iterations;
       for (const Quantity& q : qs) {
         const bool has = ser != &runs.disk || q.column == "total_force" || q.column == "max_w";
-        csv << "," << (has ? num(r, q.get(r)) : "");
+        csv << "," << (has ? num(q.get(r), q.noise(r)) : "");
       }
       csv << "\n";
       timings << scene << "," << r.code << "," << r.cells << "," << fmt("%.3g", r.seconds) << "\n";
@@ -195,8 +203,8 @@ void runs_table(std::ostream& md, const Runs& runs, const std::vector<const std:
   for (const auto* ser : series)
     for (const auto& r : *ser) {
       md << "| " << label(*ser, runs) << " | " << r.grid << " | " << r.unknowns << " | " << (r.certified ? "yes" : "**NO**")
-         << " | " << num(r, r.max_w);
-      for (double w : r.w_at) md << " | " << num(r, w);
+         << " | " << num(r.max_w, noise_w(r, 0));
+      for (size_t k = 0; k < r.w_at.size(); ++k) md << " | " << num(r.w_at[k], noise_w(r, 1 + static_cast<int>(k)));
       md << " | " << num(r, r.force);
       if (line_load) md << " | " << num(r, r.mean_line) << " | " << num(r, r.q0) << " | " << num(r, r.q45);
       md << " |\n";
@@ -323,8 +331,8 @@ bool disk_verdict(std::ostream& md, const Setup& u, const Runs& runs) {
   bool certified = true;
   for (const auto& r : runs.disk) {
     certified = certified && r.certified;
-    md << "| " << r.grid << " | " << r.unknowns << " | " << (r.certified ? "yes" : "**NO**") << " | " << num(r, r.w_at.at(0))
-       << " | " << fmt_above(r.w_at[0] - w0, noise(r, w0), 2) << " | " << num(r, r.force) << " | "
+    md << "| " << r.grid << " | " << r.unknowns << " | " << (r.certified ? "yes" : "**NO**") << " | " << num(r.w_at.at(0), noise_w(r, 1))
+       << " | " << fmt_above(r.w_at[0] - w0, noise_w(r, 1), 2) << " | " << num(r, r.force) << " | "
        << fmt_above(r.force - force, noise(r, force), 2) << " |\n";
   }
   const Quantity qs[] = {{"w(0)", "", [](const CheckValues& r) { return r.w_at.at(0); }},
