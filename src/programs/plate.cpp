@@ -20,6 +20,7 @@
 #include "format.hpp"
 #include "norms.hpp"
 #include "progress.hpp"
+#include "rim_report.hpp"
 #include "stopwatch.hpp"
 #include "summary.hpp"
 
@@ -120,12 +121,12 @@ struct Options {
   std::string csv_path, json_path, line_csv_path;
   bool rate = false, quiet = false, no_globalise = false, no_nested = false;
   CLI::Option *eps_opt = nullptr, *eps_start_opt = nullptr, *eps_min_opt = nullptr, *tol_opt = nullptr,
-              *max_iter_opt = nullptr;
+              *max_iter_opt = nullptr, *n_opt = nullptr, *sampling_opt = nullptr, *edge_opt = nullptr, *csv_opt = nullptr;
 };
 
 void add_options(CLI::App& app, Options& o) {
   app.get_formatter()->column_width(34);
-  app.add_option("-n,--cells", o.n, "cells along x; the mesh size is h = lx / n")
+  o.n_opt = app.add_option("-n,--cells", o.n, "cells along x; the mesh size is h = lx / n")
       ->check(kCellCount)
       ->capture_default_str();
   app.add_option("--lx", o.lx, "width of the rectangle")->check(kFinitePositive)->capture_default_str();
@@ -144,16 +145,18 @@ void add_options(CLI::App& app, Options& o) {
                      "exact: no penalty, the constraint held exactly (primal-dual active sets for nodes, a dual "
                      "active-set method for any other sampling), certified; nonlinear: penalty scheme (3a), "
                      "refactorised when the contact set changes; linear: penalty scheme (5a), one factorisation per "
-                     "eps, slow at small eps (its answers often fail the error bound)")
-          ->check(CLI::IsMember({"linear", "nonlinear", "exact"}))
+                     "eps, slow at small eps (its answers often fail the error bound); semi-analytic: no grid, the "
+                     "cylinder's scene only: a line load on the rim in a Fourier series and biharmonic series fitted "
+                     "to the clamped edge (ten digits; exit 3 if the contact is not the whole rim)")
+          ->check(CLI::IsMember({"linear", "nonlinear", "exact", "semi-analytic"}))
           ->capture_default_str();
-  app.add_option("--sampling", o.sampling,
+  o.sampling_opt = app.add_option("--sampling", o.sampling,
                  "where w >= phi is imposed: edge (points on the obstacle's edge, weighted by arc length, and the "
                  "grid nodes), edge-gauss (edge points and Gauss points), gauss (4x4 Gauss points per element, (8) "
                  "as printed), nodes (grid nodes, weight h^2)")
       ->check(CLI::IsMember({"edge", "edge-gauss", "gauss", "nodes"}))
       ->capture_default_str();
-  app.add_option("--edge", o.edge,
+  o.edge_opt = app.add_option("--edge", o.edge,
                  "the obstacle's edge for edge sampling: auto (the cylinder's rim; none for an expression), none "
                  "(interior samples alone), circle:cx,cy,r, or polygon:x1,y1;x2,y2;... (about one point per h)")
       ->capture_default_str();
@@ -179,9 +182,10 @@ void add_options(CLI::App& app, Options& o) {
       ->check(kFinite & CLI::Range(-1.0, 0.5))
       ->capture_default_str();
   app.add_option("--point", o.points, "report w at 'x,y' (repeatable)");
-  app.add_option("--csv", o.csv_path, "write the nodal fields (CSV) here");
+  o.csv_opt = app.add_option("--csv", o.csv_path, "write the nodal fields (CSV) here");
   app.add_option("--json", o.json_path, "write the summary (JSON) here");
-  app.add_option("--line-csv", o.line_csv_path, "write the line load q(theta) at the edge points (CSV) here");
+  app.add_option("--line-csv", o.line_csv_path,
+                 "write the line load q(theta) at the edge points (CSV) here; semi-analytic: at 720 fixed angles");
   app.add_flag("--no-globalise", o.no_globalise,
                "exact scheme: end with an error if the active set repeats, instead of the monotone fallback");
   app.add_flag("--no-nested", o.no_nested, "exact scheme: start from an empty active set, not from the coarser grid");
@@ -356,6 +360,68 @@ int solve_and_write(const Options& o, Run& r, plate::Clock::time_point t0) {
   return kSuccess;
 }
 
+// --scheme semi-analytic: the cylinder's scene by the rim-contact series (rim_contact.hpp), no grid.
+// Options that belong to a grid or a penalty are refused by name rather than ignored.
+int solve_semi_analytic(const CLI::App& app, const Options& o, plate::Clock::time_point t0) {
+  using namespace plate;
+  for (const CLI::Option* opt : {o.n_opt, o.sampling_opt, o.edge_opt, o.csv_opt, o.eps_opt, o.eps_start_opt,
+                                 o.eps_min_opt, o.tol_opt, o.max_iter_opt})
+    if (opt->count())
+      throw std::invalid_argument(opt->get_name() + " has no meaning for --scheme semi-analytic (no grid, no eps)");
+  if (o.rate || o.no_globalise || o.no_nested)
+    throw std::invalid_argument("--rate, --no-globalise and --no-nested have no meaning for --scheme semi-analytic");
+  if (o.obstacle != "cylinder")
+    throw std::invalid_argument("--obstacle: --scheme semi-analytic models the cylinder only, not '" + o.obstacle + "'");
+  size_t used = 0;
+  double load = NAN;
+  try {
+    load = std::stod(o.load, &used);
+  } catch (const std::exception&) {
+  }
+  if (used != o.load.size() || !std::isfinite(load))
+    throw std::invalid_argument("--load: --scheme semi-analytic models a uniform load, a number, not '" + o.load + "'");
+  const auto [cx, cy] = parse_pair("--centre", o.centre);
+  const RimScene scene{o.lx, o.ly, cx, cy, o.radius, o.R, load};
+  check(scene);
+  check_outputs({o.json_path, o.line_csv_path});
+  RimReport report;
+  for (const auto& p : o.points) report.points.push_back(parse_pair("--point", p));
+  for (const auto& [x, y] : report.points)
+    if (x < 0 || x > o.lx || y < 0 || y > o.ly)
+      throw std::invalid_argument("--point " + std::to_string(x) + "," + std::to_string(y) + " is outside the plate");
+  const std::vector<std::string> modelled = {"--lx", "--ly", "--obstacle", "--obstacle-height", "--radius", "--centre",
+                                            "--load", "--scheme", "--nu", "--point", "--json", "--line-csv", "--quiet"};
+  for (const auto* opt : app.get_options()) {
+    if (std::find(modelled.begin(), modelled.end(), opt->get_name()) == modelled.end()) continue;
+    std::string value = opt->count() ? CLI::detail::join(opt->reduced_results(), " ") : opt->get_default_str();
+    if (opt->get_expected_max() == 0) value = opt->count() ? "true" : "false";
+    report.config.emplace_back(opt->get_name(), value.empty() ? "(none)" : value);
+  }
+  if (!o.quiet) {
+    std::cout << "plate: the rim-contact series (no grid)\n";
+    for (const auto& [k, v] : report.config) std::cout << "  " << k << " = " << v << "\n";
+  }
+  const RimAnswer answer = rim_answer(scene);
+  report.answer = &answer;
+  report.nu = o.nu;
+  report.converged = answer.premise.holds && answer.settled;
+  if (!answer.premise.holds)
+    report.message = "the contact is not the whole rim (" + answer.premise.why +
+                     "), so the rim-contact series does not solve this scene: use --scheme exact";
+  else if (!answer.settled)
+    report.message = "the series has not settled: its last change is not below the one before";
+  report.seconds_total = seconds_since(t0);
+  const std::string warning = report.converged ? "" : "# NOT CONVERGED: " + report.message + "\n";
+  if (!o.json_path.empty()) write_file_atomically(o.json_path, rim_summary_json(report));
+  if (!o.line_csv_path.empty()) write_file_atomically(o.line_csv_path, warning + rim_line_csv(answer.finest));
+  if (!o.quiet) std::cout << rim_summary_text(report);
+  if (!report.converged) {
+    std::cerr << "plate: error: " << report.message << "\n";
+    return kNotConverged;
+  }
+  return kSuccess;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -381,6 +447,7 @@ int main(int argc, char** argv) {
   if (const int status = parse_options(app, argc, argv, "plate"); status >= 0) return status;
   const auto t0 = Clock::now();
   try {
+    if (o.scheme == "semi-analytic") return solve_semi_analytic(app, o, t0);
     Run r = check(o);
     echo(app, o, r);
     return solve_and_write(o, r, t0);

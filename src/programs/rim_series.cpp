@@ -1,0 +1,98 @@
+// rim_series: the repository's yardstick. The paper's scene solved by the rim-contact series
+// (src/rim_contact.hpp) at increasing truncations: results/rim_series.{md,csv} (every output
+// against the truncation) and results/rim_answer.csv (the answer and its bars, which the
+// continuum study, the cross-check and the speed report measure against). `rim_series --help`.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <sstream>
+
+#include "atomic_file.hpp"
+#include "exit_codes.hpp"
+#include "format.hpp"
+#include "rim_report.hpp"
+
+using namespace plate;
+
+namespace {
+
+std::string table_csv(const RimAnswer& a) {
+  std::ostringstream o;
+  o << "# rim_series: the paper's scene (f = 0, R = 0.0625 on the disk of radius 0.25 at the centre of the unit\n"
+       "# square) by the rim-contact series at truncation levels 0, 1, ...: harmonics of q (only cos 4k theta\n"
+       "# by symmetry), degree of the Trefftz polynomials, clamped-corner terms per family, unknowns; the\n"
+       "# outputs; the largest misfit between collocation points relative to R on the edge and on the rim.\n"
+       "# Made by build/rim_series; digits above 1000 u relative\n"
+       "level,harmonics,degree,corner_terms,unknowns,max_w,total_force,q_theta_0,q_theta_pi_4,edge_residual,rim_residual\n";
+  for (const RimConvergenceRow& r : a.rows)
+    o << r.level << ',' << r.harmonics << ',' << r.degree << ',' << r.corner_terms << ',' << r.unknowns << ','
+      << rim_digits(r.max_w) << ',' << rim_digits(r.total_force) << ',' << rim_digits(r.q0) << ','
+      << rim_digits(r.q45) << ',' << fmt_up(r.edge_residual) << ',' << fmt_up(r.rim_residual) << '\n';
+  return o.str();
+}
+
+std::string table_md(const RimAnswer& a) {
+  std::ostringstream o;
+  o << "| level | harmonics | degree | corner terms | unknowns | max w | total force | q(0) | q(pi/4) | edge misfit | "
+       "rim misfit |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const RimConvergenceRow& r : a.rows)
+    o << "| " << r.level << " | " << r.harmonics << " | " << r.degree << " | " << r.corner_terms << " | " << r.unknowns
+      << " | " << rim_digits(r.max_w) << " | " << rim_digits(r.total_force) << " | " << rim_digits(r.q0) << " | "
+      << rim_digits(r.q45) << " | " << fmt_up(r.edge_residual) << " | " << fmt_up(r.rim_residual) << " |\n";
+  o << "\nThe bars of the answer are the changes from level " << a.rows.size() - 2 << " to level " << a.rows.size() - 1
+    << " (floored at 1000 u relative); the changes shrink " << (a.settled ? "at every level" : "NOT at every level")
+    << ". The premise, contact along the whole rim, " << (a.premise.holds ? "holds" : "FAILS: " + a.premise.why)
+    << ": the least line load is " << rim_digits(a.premise.min_q) << " (at theta = " << fmt("%.4g", a.premise.theta_min_q)
+    << "), and inside the disk the plate stays at least " << fmt("%.3g", a.premise.min_w_minus_R)
+    << " above the cylinder (away from the rim).\n";
+  return o.str();
+}
+
+std::string answer_csv(const RimAnswer& a) {
+  const RimSeries& s = a.finest;
+  const RimPeak peak = s.max_w();
+  std::ostringstream o;
+  o << "# rim_series: the paper's scene by the rim-contact series, the finest truncation; bar: the change from\n"
+       "# the truncation before (floored at 1000 u relative). Made by build/rim_series\n"
+       "quantity,value,bar\n"
+    << "max_w," << rim_digits(peak.w) << ',' << fmt_up(a.bar_max_w) << '\n'
+    << "max_w_x," << rim_digits(peak.x) << ",\n"
+    << "max_w_y," << rim_digits(peak.y) << ",\n"
+    << "total_force," << rim_digits(s.total_force()) << ',' << fmt_up(a.bar_force) << '\n'
+    << "mean_line_force," << rim_digits(s.q_cos.at(0)) << ',' << fmt_up(a.bar_force / (2 * M_PI * s.scene.radius)) << '\n'
+    << "q_theta_0," << rim_digits(s.q(0)) << ',' << fmt_up(a.bar_q0) << '\n'
+    << "q_theta_pi_4," << rim_digits(s.q(M_PI / 4)) << ',' << fmt_up(a.bar_q45) << '\n';
+  return o.str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  clean_up_on_interrupt("rim_series");
+  CLI::App app{"rim_series: the paper's scene by the rim-contact series at increasing truncations, the\n"
+               "repository's reference answer (results/rim_series.{md,csv}, results/rim_answer.csv)."};
+  std::string out = "results", reference = "reference";
+  int levels = 6;
+  app.add_option("--out", out, "folder for the results")->capture_default_str();
+  app.add_option("--reference", reference, "folder with paper_numbers.csv")->check(CLI::ExistingDirectory)->capture_default_str();
+  app.add_option("--levels", levels, "truncation levels 0 ... levels - 1")->check(CLI::Range(3, 9))->capture_default_str();
+  app.footer(kExitStatusHelp);
+  if (const int status = parse_options(app, argc, argv, "rim_series"); status >= 0) return status;
+  try {
+    const RimAnswer a = rim_answer(rim_scene(read_paper_scene(reference)), levels);
+    write_file_atomically(out + "/rim_series.csv", table_csv(a));
+    write_file_atomically(out + "/rim_series.md", table_md(a));
+    write_file_atomically(out + "/rim_answer.csv", answer_csv(a));
+    if (!a.premise.holds || !a.settled) {
+      std::cerr << "rim_series: " << (a.premise.holds ? "the series has not settled" : "the premise fails: " + a.premise.why) << "\n";
+      return kNotConverged;
+    }
+    return kSuccess;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "rim_series: bad input: " << e.what() << "\n";
+    return kBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "rim_series: error: " << e.what() << "\n";
+    return kFailure;
+  }
+}

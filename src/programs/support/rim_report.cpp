@@ -1,0 +1,134 @@
+#include "rim_report.hpp"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace plate {
+namespace {
+using Json = nlohmann::ordered_json;
+
+// The series settles to about 13 digits: print 15, so the bars speak, not the printing.
+std::string num(double v) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.15g", v);
+  return b;
+}
+Json number(double v) { return std::isfinite(v) ? Json(std::stod(num(v))) : Json(nullptr); }
+double theta_at(int k, int angles) { return 2 * M_PI * k / angles; }
+std::string bar(double v) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.2g", v);
+  return b;
+}
+}  // namespace
+
+std::string rim_digits(double v) {
+  char b[40];
+  const int digits = std::clamp(static_cast<int>(-std::floor(std::log10(1000 * DBL_EPSILON))), 1, 17);
+  std::snprintf(b, sizeof b, "%.*g", digits, v);
+  return b;
+}
+
+double rim_max_abs_m12(const RimSeries& s, double nu, int k) {
+  double best = -1, bx = 0, by = 0;
+  auto look = [&](double x, double y) {
+    x = std::clamp(x, 0.0, s.scene.lx), y = std::clamp(y, 0.0, s.scene.ly);
+    if (const double m = std::abs(s.moments(x, y, nu).m12); m > best) best = m, bx = x, by = y;
+  };
+  for (int i = 0; i <= k; ++i)
+    for (int j = 0; j <= k; ++j) look(s.scene.lx * i / k, s.scene.ly * j / k);
+  // Then about the best lattice point, on lattices ten times finer each round (m12 is smooth).
+  for (double step = s.scene.lx / k / 5; step > 1e-9 * s.scene.lx; step /= 10) {
+    const double x0 = bx, y0 = by;
+    for (int i = -10; i <= 10; ++i)
+      for (int j = -10; j <= 10; ++j) look(x0 + i * step, y0 + j * step);
+  }
+  return best;
+}
+
+std::string rim_line_csv(const RimSeries& s, int angles) {
+  std::ostringstream o;
+  o << "# plate --scheme semi-analytic: the contact force per unit length q on the rim, at " << angles
+    << " equally spaced angles theta about the disk's centre (the series' own q, not point samples)\n"
+       "theta,x,y,q\n";
+  for (int k = 0; k < angles; ++k) {
+    const double t = theta_at(k, angles);
+    o << num(t) << ',' << num(s.scene.cx + s.scene.radius * std::cos(t)) << ','
+      << num(s.scene.cy + s.scene.radius * std::sin(t)) << ',' << num(s.q(t)) << '\n';
+  }
+  return o.str();
+}
+
+std::string rim_summary_json(const RimReport& r) {
+  const RimAnswer& a = *r.answer;
+  const RimSeries& s = a.finest;
+  const RimPeak peak = s.max_w();
+  Json j;
+  j["config"] = Json::object();
+  for (const auto& [k, v] : r.config) j["config"][k] = v;
+  j["scheme"] = "semi-analytic";
+  j["converged"] = r.converged;
+  j["message"] = r.message;
+  j["max_w"] = number(peak.w);
+  j["max_w_at"] = {number(peak.x), number(peak.y)};
+  j["max_w_bar"] = number(a.bar_max_w);
+  j["w_at_points"] = Json::array();
+  for (const auto& [x, y] : r.points) j["w_at_points"].push_back({{"x", number(x)}, {"y", number(y)}, {"w", number(s.w(x, y))}});
+  j["total_contact_force"] = number(s.total_force());
+  j["total_contact_force_bar"] = number(a.bar_force);
+  j["max_abs_m12"] = number(rim_max_abs_m12(s, r.nu));
+  Json line = {{"angles", kRimAngles}, {"length", number(2 * M_PI * s.scene.radius)}, {"total", number(s.total_force())},
+               {"mean", number(s.q_cos.empty() ? NAN : s.q_cos[0])}};
+  double lo = INFINITY, hi = -INFINITY;
+  for (int k = 0; k < kRimAngles; ++k) lo = std::min(lo, s.q(theta_at(k, kRimAngles))), hi = std::max(hi, s.q(theta_at(k, kRimAngles)));
+  line["min"] = number(lo), line["max"] = number(hi);
+  line["q_theta_0"] = number(s.q(0)), line["q_theta_0_bar"] = number(a.bar_q0);
+  line["q_theta_pi_4"] = number(s.q(M_PI / 4)), line["q_theta_pi_4_bar"] = number(a.bar_q45);
+  Json cosines = Json::array(), sines = Json::array();
+  for (double c : s.q_cos) cosines.push_back(number(c));
+  for (double c : s.q_sin) sines.push_back(number(c));
+  line["fourier_cos_m_theta"] = cosines, line["fourier_sin_m_theta"] = sines;
+  j["line_force"] = line;
+  j["premise"] = {{"holds", a.premise.holds}, {"min_q", number(a.premise.min_q)},
+                  {"theta_min_q", number(a.premise.theta_min_q)}, {"min_w_minus_R_in_disk", number(a.premise.min_w_minus_R)},
+                  {"why", a.premise.why}};
+  j["settled"] = a.settled;
+  j["levels"] = Json::array();
+  for (const RimConvergenceRow& row : a.rows)
+    j["levels"].push_back({{"level", row.level}, {"harmonics", row.harmonics}, {"degree", row.degree},
+                           {"corner_terms", row.corner_terms}, {"unknowns", row.unknowns}, {"max_w", number(row.max_w)},
+                           {"total_force", number(row.total_force)}, {"q_theta_0", number(row.q0)},
+                           {"q_theta_pi_4", number(row.q45)}, {"edge_residual", number(row.edge_residual)},
+                           {"rim_residual", number(row.rim_residual)}});
+  j["seconds"] = {{"total", number(r.seconds_total)}};
+  return j.dump(2) + "\n";
+}
+
+std::string rim_summary_text(const RimReport& r) {
+  const RimAnswer& a = *r.answer;
+  const RimSeries& s = a.finest;
+  const RimPeak peak = s.max_w();
+  std::ostringstream o;
+  o << (r.converged ? "converged" : "NOT CONVERGED: " + r.message) << "\n";
+  o << "series: " << a.rows.size() << " truncations, the last with " << a.rows.back().unknowns
+    << " unknowns; the bars are the change from the one before" << (a.settled ? "" : " (NOT settled)") << "\n";
+  o << "max w = " << num(peak.w) << " +- " << bar(a.bar_max_w) << " at (" << num(peak.x) << ", " << num(peak.y) << ")\n";
+  for (const auto& [x, y] : r.points) o << "w(" << num(x) << ", " << num(y) << ") = " << num(s.w(x, y)) << "\n";
+  o << "total contact force = " << num(s.total_force()) << " +- " << bar(a.bar_force) << ", max |m12| = "
+    << num(rim_max_abs_m12(s, r.nu)) << " (searched on the plate)\n";
+  o << "line load on the rim: mean " << num(s.q_cos.empty() ? NAN : s.q_cos[0]) << ", q(0) = " << num(s.q(0)) << " +- "
+    << bar(a.bar_q0) << ", q(pi/4) = " << num(s.q(M_PI / 4)) << " +- " << bar(a.bar_q45) << "\n";
+  o << "premise (contact along the whole rim): " << (a.premise.holds ? "holds" : "FAILS: " + a.premise.why)
+    << "; min q = " << num(a.premise.min_q) << ", min (w - R) inside the disk = " << num(a.premise.min_w_minus_R) << "\n";
+  char b[64];
+  std::snprintf(b, sizeof b, "time: total %.3g s\n", r.seconds_total);
+  o << b;
+  return o.str();
+}
+
+}  // namespace plate

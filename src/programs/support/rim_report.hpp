@@ -1,0 +1,41 @@
+// What `plate --scheme semi-analytic` writes: the rim-contact series (rim_contact.hpp) with its
+// convergence study, as the same summary, JSON keys and line-load CSV as the grid schemes give,
+// where a key means the same thing, and without the keys that belong to a grid.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "published.hpp"
+#include "rim_contact.hpp"
+
+namespace plate {
+
+struct RimReport {
+  std::vector<std::pair<std::string, std::string>> config;  // every option, echoed
+  const RimAnswer* answer = nullptr;
+  std::vector<std::pair<double, double>> points;  // where the user asked for w
+  double nu = kPoissonRatio;
+  bool converged = false;
+  std::string message;  // why not
+  double seconds_total = 0;
+};
+
+// The paper's scene (reference/paper_numbers.csv) as the series' scene: unit square, f = 0.
+inline RimScene rim_scene(const PaperScene& p) { return RimScene{1, 1, p.cx, p.cy, p.radius, p.height, 0}; }
+
+// The answer's digits: those above 1000 u |v|, the floor of the series' bars (rim_answer).
+std::string rim_digits(double v);
+
+// The line load on the rim at `angles` equally spaced angles from 0 (a fixed set, the same for any
+// truncation, so runs can be compared point by point).
+constexpr int kRimAngles = 720;
+std::string rim_line_csv(const RimSeries& s, int angles = kRimAngles);
+std::string rim_summary_json(const RimReport& r);
+std::string rim_summary_text(const RimReport& r);
+
+// max |m12| over the plate (Fig. 2's quantity, off the grid): on a lattice of (k + 1)^2 points, then
+// on finer lattices about the best one.
+double rim_max_abs_m12(const RimSeries& s, double nu, int k = 100);
+
+}  // namespace plate
