@@ -3,7 +3,7 @@
 BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
 DRIVERS := $(BUILD)/table $(BUILD)/fig1 $(BUILD)/fig2 $(BUILD)/contraction $(BUILD)/hard_cases $(BUILD)/bench $(BUILD)/peer_snesvi \
-           $(BUILD)/micro_bench $(BUILD)/continuum $(BUILD)/time_to_accuracy $(BUILD)/prose_numbers $(BUILD)/compare_tables
+           $(BUILD)/micro_bench $(BUILD)/continuum $(BUILD)/time_to_accuracy $(BUILD)/prose_numbers $(BUILD)/compare_tables $(BUILD)/rim_series
 BINS  := $(BUILD)/plate $(BUILD)/crosscheck $(BUILD)/plate_tests $(DRIVERS)
 PAPER_NUMBERS := reference/paper_numbers.csv
 
@@ -21,13 +21,14 @@ HARD_CASES := results/hard_cases.md results/hard_cases_input.md results/hard_cas
 NUMBERS   := results/numbers.csv results/numbers_machine.csv
 CONTINUUM_DATA := results/continuum.md results/continuum.csv results/continuum_error.csv results/continuum_q.csv \
                   results/continuum_answer.md results/continuum_limits.csv results/continuum_timings.csv
+RIM_SERIES := results/rim_series.md results/rim_series.csv results/rim_answer.csv
 CONTINUUM := $(CONTINUUM_DATA) results/continuum.svg results/continuum.png results/continuum_q.svg results/continuum_q.png
 BENCH     := results/speed_vs_error.csv results/speed_vs_error.md
 TTA       := results/time_to_accuracy.csv results/time_to_accuracy.md
 BENCH_ALL := $(BENCH) results/speed_vs_error.svg results/speed_vs_error.png results/micro_benchmarks.md \
              $(TTA) results/time_to_accuracy.svg results/time_to_accuracy.png
 PAPER_INPUTS := paper/paper.md paper/style.css $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp src/programs/*.cpp src/programs/support/*.cpp src/programs/support/*.hpp) \
-                $(RESULTS) $(CONTINUUM) $(CROSSCHECK) $(RIM_FIGURE) $(HARD_CASES) $(BENCH_ALL) $(NUMBERS)
+                $(RESULTS) $(RIM_SERIES) $(CONTINUUM) $(CROSSCHECK) $(RIM_FIGURE) $(HARD_CASES) $(BENCH_ALL) $(NUMBERS)
 # The packages whose versions the document's reference list gives.
 VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread libmuparser-dev libcli11-dev freefem++ gmsh \
              libpetsc-real-dev libmumps-dev pandoc gnuplot-nox g++ cmake libgtest-dev libbenchmark-dev
@@ -35,9 +36,9 @@ VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread libmuparser-d
 # What each step makes and about how long it takes here (2 cores), said before it starts.
 say = @printf '\n== make: %s (about %s)\n' $(1) $(2)
 
-.PHONY: all test deps build results paper document crosscheck hard-cases continuum bench check-results clean help FORCE
+.PHONY: all test deps build results paper document crosscheck hard-cases continuum rim-series bench check-results clean help FORCE
 
-all: build results continuum crosscheck hard-cases bench paper ## build, then every result, figure, benchmark and the document (about 30 min from scratch)
+all: build results rim-series continuum crosscheck hard-cases bench paper ## build, then every result, figure, benchmark and the document (about 30 min from scratch)
 
 help: ## list the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 12
@@ -71,6 +72,12 @@ hard-cases: results/hard_cases.md ## tiny eps, area and point contact, n = 512, 
 $(HARD_CASES) &: $(BUILD)/hard_cases $(BUILD)/plate tests/bad_input.tsv reference/plate_constants.csv
 	$(call say,"results/hard_cases.md: tiny eps; point and area contact; n = 512; every bad input","8 min")
 	$(BUILD)/hard_cases --out results --plate $(BUILD)/plate --cases tests/bad_input.tsv --scratch $(BUILD)/hard-cases-work
+
+rim-series: $(RIM_SERIES) ## the paper's scene by the rim-contact series, the yardstick: results/rim_series.md (1 s)
+
+$(RIM_SERIES) &: $(BUILD)/rim_series $(PAPER_NUMBERS)
+	$(call say,"results/rim_series.md: the rim-contact series at increasing truncations","1 s")
+	$(BUILD)/rim_series --out results
 
 continuum: $(CONTINUUM) ## the h -> 0 limit: exact solves n = 8 ... 512, three samplings, orders, Richardson (about 6 min)
 
@@ -114,9 +121,9 @@ results/%.png: paper/figures/%.gp | deps
 bench: $(BENCH_ALL) ## speed against error up to n = 1024 with PETSc's SNESVI, time to accuracy with FreeFEM, micro-benchmarks (about 25 min)
 
 # Timings differ on every run: these files are remade only when the programs change.
-$(BENCH) &: $(BUILD)/bench $(BUILD)/peer_snesvi $(PAPER_NUMBERS) results/continuum_limits.csv
+$(BENCH) &: $(BUILD)/bench $(BUILD)/peer_snesvi $(PAPER_NUMBERS) results/rim_answer.csv
 	$(call say,"results/speed_vs_error*: every solver and PETSc's SNESVI to n = 1024 in a process of its own","20 min")
-	$(BUILD)/bench --limits results/continuum_limits.csv --out results
+	$(BUILD)/bench --answer results/rim_answer.csv --out results
 
 results/micro_benchmarks.md: $(BUILD)/micro_bench
 	$(call say,"results/micro_benchmarks.md","1 min")
@@ -125,9 +132,9 @@ results/micro_benchmarks.md: $(BUILD)/micro_bench
 results/speed_vs_error.svg results/speed_vs_error.png: $(BENCH)
 
 # The whole plate process against the continuum limit; timings differ on every run.
-$(TTA) &: $(BUILD)/time_to_accuracy $(BUILD)/plate $(BUILD)/peer_snesvi results/continuum_limits.csv reference/square_with_circle.geo reference/contact_hct.edp
+$(TTA) &: $(BUILD)/time_to_accuracy $(BUILD)/plate $(BUILD)/peer_snesvi results/rim_answer.csv reference/square_with_circle.geo reference/contact_hct.edp
 	$(call say,"results/time_to_accuracy*: whole plate/SNESVI/FreeFEM runs against the continuum limit","5 min")
-	$(BUILD)/time_to_accuracy --plate $(BUILD)/plate --limits results/continuum_limits.csv --out results
+	$(BUILD)/time_to_accuracy --plate $(BUILD)/plate --answer results/rim_answer.csv --out results
 
 results/time_to_accuracy.svg results/time_to_accuracy.png: results/time_to_accuracy.csv
 
@@ -171,12 +178,13 @@ CHECKED_fig1        := fig1_points.csv fig1_surface.dat fig1_contact.dat
 CHECKED_fig2        := fig2.csv fig2_mesh.csv fig2_fit.md fig2_mesh.md
 CHECKED_continuum   := continuum.md continuum.csv continuum_error.csv continuum_q.csv continuum_answer.md continuum_limits.csv
 CHECKED_crosscheck  := crosscheck.md crosscheck.csv crosscheck_agreement.csv crosscheck_rim.csv
+CHECKED_rim_series  := rim_series.md rim_series.csv rim_answer.csv
 CHECK_DIR := $(BUILD)/check-results
 
 check-results: build ## rebuild every deterministic table into build/check-results and compare it with results/ (about 15 min)
-	$(call say,"check-results: table contraction fig1 fig2 continuum crosscheck rebuilt and compared with results/","15 min")
+	$(call say,"check-results: rim_series table contraction fig1 fig2 continuum crosscheck rebuilt and compared with results/","15 min")
 	@rm -rf $(CHECK_DIR); status=0; \
-	for d in table contraction fig1 fig2 continuum crosscheck; do \
+	for d in rim_series table contraction fig1 fig2 continuum crosscheck; do \
 	  mkdir -p $(CHECK_DIR)/$$d; \
 	  extra=; [ $$d = crosscheck ] && extra="--work $(CHECK_DIR)/crosscheck-work"; \
 	  echo "== $$d"; \
@@ -185,6 +193,7 @@ check-results: build ## rebuild every deterministic table into build/check-resul
 	  case $$d in \
 	    table) files="$(CHECKED_table)";; contraction) files="$(CHECKED_contraction)";; fig1) files="$(CHECKED_fig1)";; \
 	    fig2) files="$(CHECKED_fig2)";; continuum) files="$(CHECKED_continuum)";; crosscheck) files="$(CHECKED_crosscheck)";; \
+	    rim_series) files="$(CHECKED_rim_series)";; \
 	  esac; \
 	  $(BUILD)/compare_tables --expected results --rebuilt $(CHECK_DIR)/$$d $$files || status=1; \
 	done; \

@@ -91,6 +91,12 @@ TEST(Reproducible, ContinuumTablesOnTheCoarseGrids) {
   expect_reproducible("continuum", "--coarsest 8 --finest 64", {{"continuum.csv", 2}});
 }
 
+// The yardstick: the rim-contact series uses no BLAS, but its least squares and searches still
+// sum in an order the compiler chooses.
+TEST(Reproducible, RimSeriesTables) {
+  expect_reproducible("rim_series", "", {{"rim_series.csv"}, {"rim_series.md"}, {"rim_answer.csv"}});
+}
+
 // h = 1/4 in both panels (the committed fine panel is h = 1/64, a minute's work); key: n, sampling, R.
 TEST(Reproducible, Fig2TablesOnTheCoarseGrids) {
   expect_reproducible("fig2", "--fine 4 --mesh 4,8,16", {{"fig2.csv", 3}, {"fig2_mesh.csv", 3}});

@@ -165,7 +165,7 @@ double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) 
   }
   return (k * sxy - sx * sy) / (k * sxx - sx * sx);
 }
-// The continuum answer's max w, which lies at the centre: the errors of the centre deflection are
+// The plate's max w (the rim-contact series), which lies at the centre: the errors of the centre deflection are
 // measured against it, so that bench and time_to_accuracy measure against one answer.
 struct Continuum {
   double w = NAN, bar = NAN;
@@ -184,7 +184,7 @@ std::string csv(const std::vector<Outcome>& outcomes, const std::map<int, const 
        "# ratio: seconds / baseline seconds on the same grid; peak_mib: the run's peak resident memory;\n"
        "# error_discrete: max over nodes |w - w_exact| with w_exact the exact solver's answer on the same grid;\n"
        "# error_limit: |w(0.5,0.5) - w_lim| with w_lim = " << fmt("%.9g", L.w) << " +- " << fmt("%.1g", L.bar)
-    << " the continuum answer's max w (continuum_limits.csv, edge sampling);\n"
+    << " the plate's max w by the rim-contact series (rim_answer.csv);\n"
        "# certificate: worst relative entry of our certificate (exact solver, and the peers' answers judged by it).\n"
        "# Timings vary from run to run.\n";
   o << "solver,n,unknowns,tol,converged,iterations,factorizations,assemble_s,seconds,ratio,peak_mib,w_centre,"
@@ -335,12 +335,12 @@ void peer_target(std::ostream& md, const std::vector<Outcome>& outcomes, const B
   md << ".\n";
 }
 
-// Where the nodal grids stand against the continuum answer: the error that no solver removes.
+// Where the nodal grids stand against the plate's answer: the error that no solver removes.
 void against_continuum(std::ostream& md, const ByN& exact_at, const Continuum& L) {
   md << "\nThe error plotted against time (column error_limit of `speed_vs_error.csv`) is the distance of w(0.5, 0.5) "
-        "from the continuum answer's max w = "
+        "from the plate's max w by the rim-contact series, "
      << fmt("%.9g", L.w) << " +- " << fmt("%.1g", L.bar)
-     << " (`continuum_limits.csv`: the continuum study's limit with the constraint sampled on the obstacle's edge). ";
+     << " (`rim_answer.csv`: the rim-contact series, no grid). ";
   if (exact_at.empty()) return void(md << "\n");
   const auto& [n, e] = *exact_at.rbegin();
   md << "Nodal sampling leaves the exact solver " << fmt("%.1e", std::abs(e->v.at("w_centre") - L.w))
@@ -403,11 +403,11 @@ std::string report(const std::vector<Outcome>& outcomes, const ByN& exact_at, co
 int main(int argc, char** argv) {
   plate::clean_up_on_interrupt("bench");
   CLI::App app{"bench: work-precision study of the exact-constraint solver and the penalty schemes (make bench)"};
-  std::string out_dir = "results", paper_numbers = "reference/paper_numbers.csv", limits = "results/continuum_limits.csv";
+  std::string out_dir = "results", paper_numbers = "reference/paper_numbers.csv", limits = "results/rim_answer.csv";
   Limits l;
   Peer peer{(std::filesystem::path(argv[0]).parent_path() / "peer_snesvi").string(), "reference"};
   app.add_option("--out", out_dir, "folder for speed_vs_error.csv and .md")->capture_default_str();
-  app.add_option("--limits", limits, "the continuum answer (make continuum writes it)")->capture_default_str();
+  app.add_option("--answer", limits, "the plate's answer (make rim-series writes it)")->capture_default_str();
   app.add_option("--paper-numbers", paper_numbers, "published numbers (the obstacle)")->check(CLI::ExistingFile)->capture_default_str();
   app.add_option("--max-exact", l.max_exact, "finest grid for the exact solver (a power of two >= 8)")
       ->check(CLI::IsMember({8, 16, 32, 64, 128, 256, 512, 1024, 2048}))
@@ -427,7 +427,7 @@ int main(int argc, char** argv) {
   if (peer.reference.empty()) peer.reference = ".";
   try {
     // Read first, so that a missing continuum study stops the run before its half hour of solves.
-    const auto lim = read_continuum_limits(limits);
+    const auto lim = read_rim_answer(limits);
     const Continuum continuum{lim.at("max_w"), lim.at("max_w_bar")};
     const Field obstacle = paper_scene(read_paper_numbers(paper_numbers)).obstacle();
     const std::filesystem::path scratch = std::filesystem::temp_directory_path() / ("plate_bench_" + std::to_string(getpid()));

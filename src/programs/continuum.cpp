@@ -17,6 +17,7 @@
 #include "line_force.hpp"
 #include "published.hpp"
 #include "richardson.hpp"
+#include "rim_report.hpp"
 #include "roundoff.hpp"
 #include "verdict.hpp"
 #include "stopwatch.hpp"
@@ -127,7 +128,29 @@ struct Study {
   std::vector<Row> rows;
   std::vector<int> grids;
   std::map<std::pair<SamplingKind, std::string>, Extrapolation> fits;
+  RimAnswer yardstick;  // the rim-contact series: the answer every row is measured against
 };
+
+// How far a row is from the rim-contact series' answer, relative: max w, the total force, and for
+// edge sampling the line load at every edge point against the series' q there, over its mean.
+struct RowError {
+  double max_w, force, line = NAN;
+};
+RowError error_of(const Row& r, const RimAnswer& y) {
+  const RimSeries& s = y.finest;
+  const double w = s.max_w().w, f = s.total_force(), mean = s.q_cos.at(0);
+  RowError e{std::abs(r.max_w - w) / w, std::abs(r.force - f) / f};
+  if (!r.line.empty() && r.line.theta.size() == r.line.q.size()) {
+    e.line = 0;
+    for (size_t k = 0; k < r.line.q.size(); ++k) e.line = std::max(e.line, std::abs(r.line.q[k] - s.q(r.line.theta[k])) / mean);
+  }
+  return e;
+}
+// An observed order from two successive errors (grids h and h / 2), empty where it says nothing.
+std::string order_between(double coarse, double fine) {
+  if (!(coarse > 0 && fine > 0)) return "";
+  return fmt("%.2f", std::log2(coarse / fine));
+}
 
 const std::vector<SamplingKind> kKinds = {SamplingKind::Edge, SamplingKind::Gauss, SamplingKind::Nodes};
 
@@ -136,13 +159,19 @@ std::string answer(const Study& s) {
   const Extrapolation& f = s.fits.at({SamplingKind::Edge, "total force"});
   const Extrapolation& m = s.fits.at({SamplingKind::Edge, "mean line force"});
   std::ostringstream o;
+  const RimSeries& y = s.yardstick.finest;
+  o << "**The plate's answer** (the rim-contact series, no grid; its bars are the change from the truncation before): "
+       "max w = " << rim_digits(y.max_w().w) << " +- " << fmt_up(s.yardstick.bar_max_w) << ", total contact force = "
+    << rim_digits(y.total_force()) << " +- " << fmt_up(s.yardstick.bar_force) << ", q(0) = " << rim_digits(y.q(0))
+    << " +- " << fmt_up(s.yardstick.bar_q0) << ", q(pi/4) = " << rim_digits(y.q(M_PI / 4)) << " +- "
+    << fmt_up(s.yardstick.bar_q45) << ".\n\n";
   auto one = [](const Extrapolation& e) {
     return fmt_above(e.limit, e.limit_noise, 9, 'g') + " +- " + bar_number(e, 2) + " (" +
            (bar_is_roundoff(e) ? "the round-off bound; " : "") +
            (e.steady ? "Richardson, order " + format_order(e.orders.back(), e.order_noise.back())
                      : "finest grid; the order is not steady") + ")";
   };
-  o << "**The continuum answer** (edge sampling, exact solves on n = " << s.grids.front() << " ... " << s.grids.back()
+  o << "The finite-element estimate of the same, from its own grids alone (edge sampling, exact solves on n = " << s.grids.front() << " ... " << s.grids.back()
     << "): max w = " << one(w) << ", total contact force = " << one(f) << ", mean line force on the rim = " << one(m)
     << ".\n";
   return o.str();
@@ -170,6 +199,25 @@ std::string markdown(const Study& s) {
     }
     o << "\n";
   }
+  o << "**Against the rim-contact series.** Each row's relative distance from the series' answer (`rim_series.md`): max w, "
+       "the total force and, for edge sampling, the line load at every edge point (its largest distance from the series' "
+       "q at the same angle, over the mean load); the order is log2 of the ratio of successive errors.\n\n"
+       "| sampling | n | max w | order | total force | order | line load, pointwise | order |\n"
+       "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (SamplingKind k : kKinds) {
+    const Row* before = nullptr;
+    for (const Row& r : s.rows) {
+      if (r.kind != k) continue;
+      const RowError e = error_of(r, s.yardstick);
+      const RowError b = before ? error_of(*before, s.yardstick) : RowError{NAN, NAN, NAN};
+      o << "| " << to_string(k) << " | " << r.n << " | " << fmt_above(e.max_w, r.noise_max_w / r.max_w, 2) << " | "
+        << order_between(b.max_w, e.max_w) << " | " << fmt_above(e.force, r.noise_force / r.force, 2) << " | "
+        << order_between(b.force, e.force) << " | " << (std::isfinite(e.line) ? fmt("%.2e", e.line) : "") << " | "
+        << order_between(b.line, e.line) << " |\n";
+      before = &r;
+    }
+  }
+  o << "\n";
   o << "**Observed orders and limits.** The order from three successive grids is log2 of the ratio of their "
        "increments; it exists where the increments keep one sign and shrink. Where the last two orders differ by "
        "at most " << fmt("%g", kSteadySpread) << " the order is called steady, and the Richardson limit from the last three grids is given with "
@@ -208,17 +256,22 @@ std::string limits(const Study& s) {
   return o.str();
 }
 
-// Relative error of every row against the edge-sampling limit, for the figure.
+// Relative error of every row against the rim-contact series, for the figure and the speed report.
 std::string errors(const Study& s) {
   std::ostringstream o;
-  o << "# continuum: |value - edge limit| / |edge limit| for max w and the total force; made by build/continuum\n"
-       "sampling,n,h,err_max_w,err_total_force\n";
-  const Extrapolation &W = s.fits.at({SamplingKind::Edge, "max w"}), &F = s.fits.at({SamplingKind::Edge, "total force"});
-  const double w = W.limit, f = F.limit;
-  for (const Row& r : s.rows)
+  o << "# continuum: |value - answer| / |answer| for max w and the total force, the answer being the rim-contact\n"
+       "# series' (rim_series.md); err_line_pointwise (edge sampling): max over the edge points of |q - q_series| over\n"
+       "# the mean load. Made by build/continuum\n"
+       "sampling,n,h,err_max_w,err_total_force,err_line_pointwise\n";
+  const double w_bar = s.yardstick.bar_max_w, f_bar = s.yardstick.bar_force;
+  for (const Row& r : s.rows) {
+    const RowError e = error_of(r, s.yardstick);
     o << to_string(r.kind) << "," << r.n << "," << fmt("%.10g", 1.0 / r.n) << ","
-      << fmt_above(std::abs(r.max_w - w) / w, (r.noise_max_w + W.limit_noise) / w, 5) << ","
-      << fmt_above(std::abs(r.force - f) / f, (r.noise_force + F.limit_noise) / f, 5) << "\n";
+      << fmt_above(e.max_w, (r.noise_max_w + w_bar) / r.max_w, 5) << ","
+      << fmt_above(e.force, (r.noise_force + f_bar) / r.force, 5) << ","
+      << (std::isfinite(e.line) ? fmt_above(e.line, exact_solve_roundoff(r.n, r.line.max) * r.line.q.size() / r.line.mean, 3) : "")
+      << "\n";
+  }
   return o.str();
 }
 
@@ -264,6 +317,9 @@ int main(int argc, char** argv) {
     const auto pub = read_paper_numbers(numbers);
     const PaperScene scene = paper_scene(pub);
     Study s;
+    s.yardstick = rim_answer(rim_scene(scene));
+    if (!s.yardstick.premise.holds || !s.yardstick.settled)
+      throw std::runtime_error("the rim-contact series gives no answer to measure against: " + s.yardstick.premise.why);
     for (int n = coarsest; n <= finest; n *= 2) s.grids.push_back(n);
     std::ostringstream timings;
     timings << "# continuum run times in seconds (assembly and exact solve, grid-sequenced); not byte-identical\n"

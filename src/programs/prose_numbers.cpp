@@ -20,6 +20,7 @@
 #include "contact.hpp"
 #include "dual_active_set.hpp"
 #include "published.hpp"
+#include "rim_contact.hpp"
 #include "richardson.hpp"
 
 using namespace plate;
@@ -237,6 +238,33 @@ void continuum_numbers(Numbers& num, const std::string& results) {
           src + " |nodes limit - edge limit| / nodes bar");
 }
 
+// The yardstick (results/rim_answer.csv) and how the grids approach it (results/continuum_error.csv):
+// the pointwise line load's error on every edge grid, and the last observed orders of max w and the force.
+void rim_series_numbers(Numbers& num, const std::string& results) {
+  const CsvTable a = read_csv_table(results + "/rim_answer.csv");
+  for (std::size_t r = 0; r < a.rows.size(); ++r) {
+    const std::string q = a.text(r, "quantity");
+    num.put("rim." + q, a.text(r, "value"), "results/rim_answer.csv " + q);
+    if (!a.text(r, "bar").empty()) num.put("rim." + q + "_bar", a.text(r, "bar"), "results/rim_answer.csv " + q + " bar");
+  }
+  const CsvTable e = read_csv_table(results + "/continuum_error.csv");
+  const std::vector<std::size_t> edge = e.where("sampling", "edge");
+  if (edge.size() < 2) throw std::runtime_error(e.path + ": fewer than two edge rows");
+  const std::string src = "results/continuum_error.csv edge rows";
+  Range line;
+  for (std::size_t r : edge) line.add(e.number(r, "err_line_pointwise"));
+  num.put_range("continuum.edge_line_error", line, [](double v) { return fmt("%.2g", v); }, src + ": err_line_pointwise");
+  const std::size_t last = edge.back(), before = edge[edge.size() - 2];
+  num.put("continuum.edge_n_finest", e.text(last, "n"), src + ": finest n");
+  for (const char* q : {"max_w", "total_force"}) {
+    const std::string column = std::string("err_") + q;
+    num.put(std::string("continuum.edge_error_") + q + "_finest", e.text(last, column), src + ": finest " + column);
+    num.put(std::string("continuum.edge_order_") + q + "_last",
+            fmt("%.1f", std::log2(e.number(before, column) / e.number(last, column))),
+            src + ": log2 of the ratio of the last two " + column);
+  }
+}
+
 // Package versions of the machine that built the document (results/versions.csv, from dpkg).
 void version_numbers(Numbers& num, const std::string& results) {
   const CsvTable t = read_csv_table(results + "/versions.csv");
@@ -247,6 +275,8 @@ void version_numbers(Numbers& num, const std::string& results) {
 // Our own choices that the prose states, from the constants the code uses.
 void model_numbers(Numbers& num) {
   num.put("model.nu", fmt("%g", kPoissonRatio), "src/contact.hpp kPoissonRatio");
+  num.put("model.rim_oversampling", fmt("%g", RimSeriesOptions{}.oversampling),
+          "src/rim_contact.hpp RimSeriesOptions::oversampling");
   num.put("richardson.steady_spread", fmt("%g", kSteadySpread), "src/richardson.hpp kSteadySpread");
   num.put("model.correction_block", count(kCorrectionBlock), "src/fixed_set.hpp kCorrectionBlock");
   num.put("model.max_correction", count(ExactOptions{}.max_correction), "src/active_set.hpp ExactOptions::max_correction");
@@ -296,6 +326,7 @@ int main(int argc, char** argv) {
     crosscheck_numbers(fixed, results);
     hard_cases_numbers(fixed, results);
     continuum_numbers(fixed, results);
+    rim_series_numbers(fixed, results);
     linear_history_numbers(fixed, results);
     published_numbers(fixed, reference);
     model_numbers(fixed);

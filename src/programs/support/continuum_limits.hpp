@@ -12,4 +12,9 @@ namespace plate {
 // either limit, or holds one that is not a number.
 std::map<std::string, double> read_continuum_limits(const std::string& path);
 
+// The same keys from the rim-contact series' answer (results/rim_answer.csv, written by
+// build/rim_series): the yardstick that bench and time_to_accuracy measure against, its bars some
+// orders of magnitude below what any grid reaches.
+std::map<std::string, double> read_rim_answer(const std::string& path);
+
 }  // namespace plate
