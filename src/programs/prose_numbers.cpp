@@ -247,6 +247,12 @@ void rim_series_numbers(Numbers& num, const std::string& results) {
     num.put("rim." + q, a.text(r, "value"), "results/rim_answer.csv " + q);
     if (!a.text(r, "bar").empty()) num.put("rim." + q + "_bar", a.text(r, "bar"), "results/rim_answer.csv " + q + " bar");
   }
+  // The plate alone (results/uniform_load.csv): the finite elements' error at every n, round-off on the finest.
+  const CsvTable u = read_csv_table(results + "/uniform_load.csv");
+  for (std::size_t r = 0; r < u.rows.size(); ++r)
+    if (u.text(r, "n") != "0")
+      num.put("fe.uniform_error_" + u.text(r, "n"), fmt("%.1e", std::abs(u.number(r, "relative_error"))),
+              "results/uniform_load.csv n = " + u.text(r, "n") + ": |relative_error|");
   const CsvTable e = read_csv_table(results + "/continuum_error.csv");
   const std::vector<std::size_t> edge = e.where("sampling", "edge");
   if (edge.size() < 2) throw std::runtime_error(e.path + ": fewer than two edge rows");
@@ -256,9 +262,11 @@ void rim_series_numbers(Numbers& num, const std::string& results) {
   num.put_range("continuum.edge_line_error", line, [](double v) { return fmt("%.2g", v); }, src + ": err_line_pointwise");
   const std::size_t last = edge.back(), before = edge[edge.size() - 2];
   num.put("continuum.edge_n_finest", e.text(last, "n"), src + ": finest n");
+  num.put("continuum.edge_n_before", e.text(before, "n"), src + ": the n before the finest");
   for (const char* q : {"max_w", "total_force"}) {
     const std::string column = std::string("err_") + q;
     num.put(std::string("continuum.edge_error_") + q + "_finest", e.text(last, column), src + ": finest " + column);
+    num.put(std::string("continuum.edge_error_") + q + "_before", e.text(before, column), src + ": " + column + " before the finest");
     num.put(std::string("continuum.edge_order_") + q + "_last",
             fmt("%.1f", std::log2(e.number(before, column) / e.number(last, column))),
             src + ": log2 of the ratio of the last two " + column);
