@@ -39,9 +39,14 @@ LineForce line_force(const Problem& p, const VectorXd& lambda, int harmonics) {
   if (s.edge_size() == 0) return f;
   f.theta = s.edge.theta;
   f.length = s.edge.length;
-  for (int k = 0; k < s.edge_size(); ++k) {
+  const int m = s.edge_size(), reach = (s.edge_spline_degree + 1) / 2;
+  for (int k = 0; k < m; ++k) {
     const int row = s.edge_begin + k;
-    f.q.push_back(lambda[row]);
+    // Points: the multiplier is q there. B-splines (D25): q(theta_k) = sum_i lambda_i B(k - i).
+    double q = s.edge_spline_degree > 0 ? 0.0 : lambda[row];
+    for (int d = -reach; s.edge_spline_degree > 0 && d <= reach; ++d)
+      q += lambda[s.edge_begin + ((k + d) % m + m) % m] * cardinal_bspline(s.edge_spline_degree, d);
+    f.q.push_back(q);
     f.total += s.weights[row] * lambda[row];
   }
   summarise(f);

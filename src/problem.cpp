@@ -91,7 +91,7 @@ Problem make_problem(const Grid& g, const SamplingSpec& spec, const Field& obsta
   check_obstacle_on_boundary(g, obstacle);
   check_obstacle_at_nodes(g, obstacle);
   // Without an edge curve the edge kinds keep their interior samples alone.
-  Problem p{g, make_sampling(g, spec.kind, spec.edge), {}, {}, {}, {}, spec};
+  Problem p{g, make_sampling(g, spec.kind, spec.edge, spec.splines), {}, {}, {}, {}, spec};
   p.phi.resize(p.sampling.size());
   for (int i = 0; i < p.sampling.size(); ++i) {
     const int k = i - p.sampling.edge_begin;

@@ -1,6 +1,8 @@
 // One discrete obstacle problem: the grid, the sampling of the constraint, the obstacle at the
 // sample points, and the assembled stiffness, mass and load. Built once, solved many times.
 #pragma once
+#include <utility>
+
 #include "assemble.hpp"
 #include "sampling.hpp"
 
@@ -10,6 +12,9 @@ namespace plate {
 struct SamplingSpec {
   SamplingKind kind = SamplingKind::Nodes;
   EdgeCurve edge;
+  EdgeSplines splines;  // edge rows at points, or averaged against B-splines (make_sampling)
+  SamplingSpec() = default;
+  SamplingSpec(SamplingKind k, EdgeCurve e = {}, EdgeSplines sp = {}) : kind(k), edge(std::move(e)), splines(sp) {}
 };
 
 struct Problem {

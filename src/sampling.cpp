@@ -2,6 +2,8 @@
 #include "sampling.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <stdexcept>
 #include <utility>
 
@@ -9,6 +11,20 @@
 #include "gauss.hpp"
 
 namespace plate {
+
+// The centred cardinal B-spline of degree p at x (in knot spacings): 1 at x = 0 for p = 1 (the hat),
+// support |x| < (p + 1) / 2, the translates summing to one.
+double cardinal_bspline(int p, double x) {
+  double sum = 0, binomial = 1, factorial = 1;
+  for (int k = 1; k <= p; ++k) factorial *= k;
+  for (int k = 0; k <= p + 1; ++k) {
+    const double t = x + 0.5 * (p + 1) - k;
+    if (t > 0) sum += (k % 2 ? -1 : 1) * binomial * std::pow(t, p);
+    binomial = binomial * (p + 1 - k) / (k + 1);
+  }
+  return sum / factorial;
+}
+
 
 const char* to_string(SamplingKind kind) {
   switch (kind) {
@@ -30,7 +46,7 @@ namespace {
 Sampling gauss_points(const Grid& g) {
   const Quadrature1D q = gauss_legendre(4);
   const int per = 16, npts = g.elements() * per;
-  Sampling s{SamplingKind::Gauss, {}, {}, VectorXd(npts), RowSpMat(npts, g.unknowns()), 0, {}};
+  Sampling s{SamplingKind::Gauss, {}, {}, VectorXd(npts), RowSpMat(npts, g.unknowns()), 0, {}, 0};
   s.x.reserve(npts);
   s.y.reserve(npts);
   s.S.reserve(static_cast<Eigen::Index>(npts) * 16);
@@ -60,7 +76,7 @@ Sampling gauss_points(const Grid& g) {
 // @region nodal-sampling
 Sampling grid_nodes(const Grid& g) {
   const int npts = g.interior_nodes();
-  Sampling s{SamplingKind::Nodes, {}, {}, VectorXd::Constant(npts, g.h * g.h), RowSpMat(npts, g.unknowns()), 0, {}};
+  Sampling s{SamplingKind::Nodes, {}, {}, VectorXd::Constant(npts, g.h * g.h), RowSpMat(npts, g.unknowns()), 0, {}, 0};
   s.S.reserve(npts);
   for (int j = 1; j < g.ny; ++j)
     for (int i = 1; i < g.nx; ++i) {
@@ -95,32 +111,83 @@ struct RowBuilder {
   }
 };
 
+// The row of S that gives (S w)_p = w_h(x, y): the values of the 16 basis functions of the element
+// that holds (x, y), added into `row` times `scale`. A point on an element side may use either
+// element (w_h is C^1).
+void add_point_row(const Grid& g, double x, double y, double scale, std::map<int, double>& row) {
+  int ex, ey;
+  double t, u;
+  if (!g.locate(x, y, ex, ey, t, u))
+    throw std::invalid_argument("--edge: the point (" + std::to_string(x) + ", " + std::to_string(y) +
+                                ") of the obstacle's edge is outside the plate");
+  const auto dofs = g.element_dofs(ex, ey);
+  const Vector16 v = bfs_basis(t, u, g.h).v;
+  for (int j = 0; j < 16; ++j)
+    if (dofs[j] >= 0) row[dofs[j]] += scale * v[j];
+}
+
+// @region edge-splines
+// Eq. (D25): the constraint on a circle averaged against B-splines of the angle,
+//   (S w)_j = (1 / Delta) int B_j(theta) w_h(x(theta)) dtheta >= phi_j,
+// B_j the cardinal B-spline of degree `degree` centred at theta_j = 2 pi j / M, Delta = 2 pi / M,
+// the knots about `cells` cells apart (M a multiple of 8, for the square's symmetries). The weight
+// of row j is r Delta = r int B_j, so its multiplier lambda_j is a force per unit length and the
+// line load is q(theta) = sum_j lambda_j B_j(theta), nonnegative where every lambda_j is: a
+// multiplier space coarse enough for the bicubic plate to tell its functions apart, where a point
+// per cell is not. The integral is taken by 4 Gauss points on pieces about a cell long between the
+// spline's breaks; phi_j is the obstacle at theta_j (on the paper's scene, the rim's height).
+EdgePoints spline_rows(const Grid& g, const EdgeCurve& c, double cells, int degree,
+                       std::vector<std::map<int, double>>& rows) {
+  const double length = 2 * M_PI * c.r;
+  const int M = 8 * (1 << std::max(0, static_cast<int>(std::lround(std::log2(length / (8 * cells * g.h))))));
+  if (M < degree + 2) throw std::invalid_argument("--edge-spline: the circle is too short for its splines");
+  const double delta = 2 * M_PI / M, half = 0.5 * (degree + 1);
+  const int pieces = std::max(1, static_cast<int>(std::ceil(c.r * delta / g.h)));  // per knot spacing
+  const Quadrature1D q = gauss_legendre(4);
+  EdgePoints e;
+  e.length = length;
+  rows.assign(M, {});
+  for (int j = 0; j < M; ++j) {
+    const double tj = j * delta, cj = std::cos(tj), sj = std::sin(tj);
+    e.theta.push_back(tj);
+    e.x.push_back(c.cx + c.r * cj), e.y.push_back(c.cy + c.r * sj);
+    e.nx.push_back(-cj), e.ny.push_back(-sj);
+    e.weight.push_back(c.r * delta);
+    for (int span = 0; span < degree + 1; ++span)  // unit spans of the support, from -half
+      for (int k = 0; k < pieces; ++k)
+        for (size_t i = 0; i < q.points.size(); ++i) {
+          const double x = -half + span + (k + q.points[i]) / pieces, t = tj + x * delta;
+          add_point_row(g, c.cx + c.r * std::cos(t), c.cy + c.r * std::sin(t),
+                        cardinal_bspline(degree, x) * q.weights[i] / pieces, rows[j]);
+        }
+  }
+  return e;
+}
+// @end edge-splines
+
 // @region edge-sampling
 // Keeps the interior rows farther than 1e-9 h from the curve (a node on the circle would repeat an
 // edge point) and appends one row per edge point: the values of the element's 16 basis functions
 // there, so that (S w)_p = w_h(x_p) exactly. A point on an element side may use either element
 // (w_h is C^1).
-void add_edge(const Grid& g, const EdgeCurve& curve, Sampling& s) {
-  const EdgePoints e = edge_points(curve, g.h);
+void add_edge(const Grid& g, const EdgeCurve& curve, const EdgeSplines& splines, Sampling& s) {
+  std::vector<std::map<int, double>> rows;
+  EdgePoints e;
+  if (splines.degree > 0 && curve.kind == EdgeCurve::Kind::Circle) {
+    e = spline_rows(g, curve, splines.cells, splines.degree, rows);
+    s.edge_spline_degree = splines.degree;
+  } else {
+    e = edge_points(curve, g.h);
+    rows.resize(e.size());
+    for (int k = 0; k < e.size(); ++k) add_point_row(g, e.x[k], e.y[k], 1.0, rows[k]);
+  }
   std::vector<int> keep;
   for (int p = 0; p < s.size(); ++p)
     if (!(distance_to_edge(curve, s.x[p], s.y[p]) <= 1e-9 * g.h)) keep.push_back(p);
   RowBuilder b(s, keep, e.size());
-  std::vector<std::pair<int, double>> row;
   for (int k = 0; k < e.size(); ++k) {
-    int ex, ey;
-    double t, u;
-    if (!g.locate(e.x[k], e.y[k], ex, ey, t, u))
-      throw std::invalid_argument("--edge: the point (" + std::to_string(e.x[k]) + ", " + std::to_string(e.y[k]) +
-                                  ") of the obstacle's edge is outside the plate");
-    const auto dofs = g.element_dofs(ex, ey);
-    const Vector16 v = bfs_basis(t, u, g.h).v;
-    row.clear();
-    for (int j = 0; j < 16; ++j)
-      if (dofs[j] >= 0) row.emplace_back(dofs[j], v[j]);
-    std::sort(row.begin(), row.end());
     b.S.startVec(b.next);
-    for (const auto& [col, val] : row) b.S.insertBack(b.next, col) = val;
+    for (const auto& [col, val] : rows[k]) b.S.insertBack(b.next, col) = val;  // a std::map: columns in order
     b.weights[b.next++] = e.weight[k];
     b.x.push_back(e.x[k]);
     b.y.push_back(e.y[k]);
@@ -136,11 +203,14 @@ void add_edge(const Grid& g, const EdgeCurve& curve, Sampling& s) {
 
 }  // namespace
 
-Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge) {
+Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge, const EdgeSplines& splines) {
+  if (splines.degree < 0 || splines.degree > 5) throw std::invalid_argument("--edge-spline: the degree must be 0 ... 5");
+  if (splines.degree > 0 && !(splines.cells > 0 && std::isfinite(splines.cells)))
+    throw std::invalid_argument("--edge-spline: the knot spacing in cells must be finite and > 0");
   const bool gauss = kind == SamplingKind::Gauss || kind == SamplingKind::EdgeGauss;
   Sampling s = gauss ? gauss_points(g) : grid_nodes(g);
   s.kind = kind;
-  if (has_edge(kind) && !edge.empty()) add_edge(g, edge, s);
+  if (has_edge(kind) && !edge.empty()) add_edge(g, edge, splines, s);
   s.edge_begin = s.size() - s.edge.size();
   return s;
 }

@@ -11,6 +11,15 @@
 
 namespace plate {
 
+// How the edge rows constrain the plate: at points (degree 0), or averaged against B-splines of
+// the given degree whose knots are about `cells` cells apart.
+struct EdgeSplines {
+  int degree = 0;
+  double cells = 3;
+};
+// The centred cardinal B-spline of degree p, x in knot spacings (1 at 0 for the hat, p = 1).
+double cardinal_bspline(int p, double x);
+
 enum class SamplingKind {
   Gauss,      // 4 x 4 Gauss points per element with their weights: (8) with the L2 product, exactly
   Nodes,      // interior grid nodes with weight h^2: the trapezoid rule, constraints on nodal values
@@ -28,6 +37,7 @@ struct Sampling {
   RowSpMat S;                // points x unknowns
   int edge_begin = 0;
   EdgePoints edge;           // the edge rows' points, normals and angles
+  int edge_spline_degree = 0;  // > 0: the edge rows are B-spline averages (D25), their points the knots
   int size() const { return static_cast<int>(x.size()); }
   int edge_size() const { return size() - edge_begin; }
   // Whether every row is a bound on one nodal value (row q on interior node q).
@@ -36,7 +46,9 @@ struct Sampling {
 
 // `edge` is used by the Edge kinds only: they sample it, and drop the interior samples that lie
 // on it (a node on the circle would repeat an edge point, or stand for the line as an area).
-Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge = {});
+// With splines.degree > 0 (circles only) each edge row is the constraint averaged against a
+// B-spline of the angle (D25); degree 0: one row per point, about a cell apart.
+Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge = {}, const EdgeSplines& splines = {});
 const char* to_string(SamplingKind kind);
 // The sampling named by to_string; throws std::invalid_argument naming --sampling otherwise.
 SamplingKind sampling_kind(const std::string& name);

@@ -112,7 +112,7 @@ double answer_scale(const plate::Problem& p) {
 struct Options {
   int n = 4;
   double lx = 1.0, ly = 1.0;
-  std::string obstacle = "cylinder", load = "0", scheme = "exact", sampling = "edge", edge = "auto";
+  std::string obstacle = "cylinder", load = "0", scheme = "exact", sampling = "edge", edge = "auto", edge_rows = "points";
   double R = 0.0625, radius = 0.25, nu = plate::kPoissonRatio;  // the paper's cylinder (a test holds these to reference/)
   std::string centre = "0.5,0.5";
   plate::SolveOptions opt;
@@ -121,7 +121,8 @@ struct Options {
   std::string csv_path, json_path, line_csv_path;
   bool rate = false, quiet = false, no_globalise = false, no_nested = false;
   CLI::Option *eps_opt = nullptr, *eps_start_opt = nullptr, *eps_min_opt = nullptr, *tol_opt = nullptr,
-              *max_iter_opt = nullptr, *n_opt = nullptr, *sampling_opt = nullptr, *edge_opt = nullptr, *csv_opt = nullptr;
+              *max_iter_opt = nullptr, *n_opt = nullptr, *sampling_opt = nullptr, *edge_opt = nullptr, *csv_opt = nullptr,
+              *edge_rows_opt = nullptr;
 };
 
 void add_options(CLI::App& app, Options& o) {
@@ -159,6 +160,11 @@ void add_options(CLI::App& app, Options& o) {
   o.edge_opt = app.add_option("--edge", o.edge,
                  "the obstacle's edge for edge sampling: auto (the cylinder's rim; none for an expression), none "
                  "(interior samples alone), circle:cx,cy,r, or polygon:x1,y1;x2,y2;... (about one point per h)")
+      ->capture_default_str();
+  o.edge_rows_opt = app.add_option("--edge-rows", o.edge_rows,
+                 "how edge sampling constrains a circle: points (one row per point, about a cell apart) or "
+                 "spline:DEGREE,CELLS (w averaged against B-splines of the angle, knots about CELLS cells apart; "
+                 "spline:3,6 makes the line load converge point by point)")
       ->capture_default_str();
   o.eps_opt = app.add_option("--eps", o.eps_fixed, "solve at this eps only (no continuation); every eps is in units of lx^4, so it means the same in any unit of length")->check(kFinitePositive);
   o.eps_start_opt = app.add_option("--eps-start", o.opt.eps_start, "first eps of the continuation")
@@ -204,6 +210,16 @@ struct Run {
   plate::Report report;
 };
 
+// "points" or "spline:DEGREE,CELLS"; throws std::invalid_argument naming --edge-rows otherwise.
+plate::EdgeSplines parse_edge_rows(const std::string& text) {
+  if (text == "points") return {};
+  const std::string bad = "--edge-rows '" + text + "': expected points or spline:DEGREE,CELLS (DEGREE 1 ... 5, CELLS > 0)";
+  if (text.rfind("spline:", 0) != 0) throw std::invalid_argument(bad);
+  const auto [degree, cells] = parse_pair("--edge-rows", text.substr(7));
+  if (!(degree >= 1 && degree <= 5 && degree == std::floor(degree) && cells > 0)) throw std::invalid_argument(bad);
+  return plate::EdgeSplines{static_cast<int>(degree), cells};
+}
+
 // Throws std::invalid_argument naming the option at fault; nothing has been written yet.
 Run check(const Options& o) {
   using namespace plate;
@@ -220,6 +236,9 @@ Run check(const Options& o) {
     r.phi = expression("--obstacle", o.obstacle);
   }
   if (o.edge != "auto") r.spec.edge = parse_edge(o.edge);
+  r.spec.splines = parse_edge_rows(o.edge_rows);
+  if (r.spec.splines.degree > 0 && !(has_edge(r.spec.kind) && r.spec.edge.kind == EdgeCurve::Kind::Circle))
+    throw std::invalid_argument("--edge-rows spline needs edge sampling of a circle (--sampling edge, the cylinder or --edge circle:...)");
   if (!o.line_csv_path.empty() && !has_edge(r.spec.kind))
     throw std::invalid_argument("--line-csv needs edge sampling (--sampling edge or edge-gauss)");
   r.f = expression("--load", o.load);
@@ -364,7 +383,7 @@ int solve_and_write(const Options& o, Run& r, plate::Clock::time_point t0) {
 // Options that belong to a grid or a penalty are refused by name rather than ignored.
 int solve_semi_analytic(const CLI::App& app, const Options& o, plate::Clock::time_point t0) {
   using namespace plate;
-  for (const CLI::Option* opt : {o.n_opt, o.sampling_opt, o.edge_opt, o.csv_opt, o.eps_opt, o.eps_start_opt,
+  for (const CLI::Option* opt : {o.n_opt, o.sampling_opt, o.edge_opt, o.edge_rows_opt, o.csv_opt, o.eps_opt, o.eps_start_opt,
                                  o.eps_min_opt, o.tol_opt, o.max_iter_opt})
     if (opt->count())
       throw std::invalid_argument(opt->get_name() + " has no meaning for --scheme semi-analytic (no grid, no eps)");
