@@ -1,5 +1,5 @@
 # Error against time, from results/time_to_accuracy.csv (written by build/time_to_accuracy): the
-# relative distance of max w and of the total contact force to the continuum limit, against the
+# relative distance of max w and of the total contact force to the plate's answer (the rim-contact series, results/rim_answer.csv), against the
 # wall time of the whole process (plate, PETSc's SNESVI peer, or gmsh and FreeFem++), one line per
 # solver and sampling (n = 8, 16, ...; FreeFEM: 4, 8, ... cells per quarter circle).
 # Filled points: certified runs (exit 0); open points: runs that exit 3.
@@ -11,7 +11,7 @@ set logscale xy
 set format y '10^{%L}'
 set format x '10^{%L}'
 set xlabel 'wall time of the whole process (s)'
-set ylabel 'relative error against the limit'
+set ylabel 'relative error against the series'
 set grid
 set key outside below horizontal maxrows 3 box font ',10'
 # Nine lines: the ninth (FreeFEM) needs a colour of its own, the default list has eight.
