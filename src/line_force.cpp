@@ -42,7 +42,7 @@ LineForce line_force(const Problem& p, const VectorXd& lambda, int harmonics) {
   const int m = s.edge_size(), reach = (s.edge_spline_degree + 1) / 2;
   for (int k = 0; k < m; ++k) {
     const int row = s.edge_begin + k;
-    // Points: the multiplier is q there. B-splines (D25): q(theta_k) = sum_i lambda_i B(k - i).
+    // Points: the multiplier is q there. B-spline rows: q(theta_k) = sum_i lambda_i B(k - i).
     double q = s.edge_spline_degree > 0 ? 0.0 : lambda[row];
     for (int d = -reach; s.edge_spline_degree > 0 && d <= reach; ++d)
       q += lambda[s.edge_begin + ((k + d) % m + m) % m] * cardinal_bspline(s.edge_spline_degree, d);

@@ -656,12 +656,10 @@ RimAnswer rim_answer(const RimScene& s, int levels, bool extended) {
   auto bar = [&](double RimConvergenceRow::*v) {
     const size_t n = a.rows.size();
     const double floor = 1000 * DBL_EPSILON * std::abs(a.rows[n - 1].*v);
-    const double last = std::max(std::abs(a.rows[n - 1].*v - a.rows[n - 2].*v), floor);
-    if (n >= 3) {
-      const double before = std::max(std::abs(a.rows[n - 2].*v - a.rows[n - 3].*v), floor);
-      if (!(last < before || last == floor)) a.settled = false;
-    }
-    return last;
+    auto change = [&](size_t i) { return std::max(std::abs(a.rows[i].*v - a.rows[i - 1].*v), floor); };
+    for (size_t i = 2; i < n; ++i)  // every change below the one before it, or at the floor
+      if (!(change(i) < change(i - 1) || change(i) == floor)) a.settled = false;
+    return change(n - 1);
   };
   a.bar_max_w = bar(&RimConvergenceRow::max_w);
   a.bar_force = bar(&RimConvergenceRow::total_force);

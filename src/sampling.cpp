@@ -127,7 +127,7 @@ void add_point_row(const Grid& g, double x, double y, double scale, std::map<int
 }
 
 // @region edge-splines
-// Eq. (D25): the constraint on a circle averaged against B-splines of the angle,
+// The constraint on a circle averaged against B-splines of the angle (not yet numbered in the document),
 //   (S w)_j = (1 / Delta) int B_j(theta) w_h(x(theta)) dtheta >= phi_j,
 // B_j the cardinal B-spline of degree `degree` centred at theta_j = 2 pi j / M, Delta = 2 pi / M,
 // the knots about `cells` cells apart (M a multiple of 8, for the square's symmetries). The weight
@@ -140,7 +140,7 @@ EdgePoints spline_rows(const Grid& g, const EdgeCurve& c, double cells, int degr
                        std::vector<std::map<int, double>>& rows) {
   const double length = 2 * M_PI * c.r;
   const int M = 8 * (1 << std::max(0, static_cast<int>(std::lround(std::log2(length / (8 * cells * g.h))))));
-  if (M < degree + 2) throw std::invalid_argument("--edge-spline: the circle is too short for its splines");
+  if (M < degree + 2) throw std::invalid_argument("--edge-rows: the circle is too short for its splines");
   const double delta = 2 * M_PI / M, half = 0.5 * (degree + 1);
   const int pieces = std::max(1, static_cast<int>(std::ceil(c.r * delta / g.h)));  // per knot spacing
   const Quadrature1D q = gauss_legendre(4);
@@ -173,7 +173,7 @@ EdgePoints spline_rows(const Grid& g, const EdgeCurve& c, double cells, int degr
 void add_edge(const Grid& g, const EdgeCurve& curve, const EdgeSplines& splines, Sampling& s) {
   std::vector<std::map<int, double>> rows;
   EdgePoints e;
-  if (splines.degree > 0 && curve.kind == EdgeCurve::Kind::Circle) {
+  if (splines.degree > 0) {  // make_sampling has checked that the curve is a circle
     e = spline_rows(g, curve, splines.cells, splines.degree, rows);
     s.edge_spline_degree = splines.degree;
   } else {
@@ -204,9 +204,11 @@ void add_edge(const Grid& g, const EdgeCurve& curve, const EdgeSplines& splines,
 }  // namespace
 
 Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge, const EdgeSplines& splines) {
-  if (splines.degree < 0 || splines.degree > 5) throw std::invalid_argument("--edge-spline: the degree must be 0 ... 5");
+  if (splines.degree < 0 || splines.degree > 5) throw std::invalid_argument("--edge-rows: the spline degree must be 0 ... 5");
   if (splines.degree > 0 && !(splines.cells > 0 && std::isfinite(splines.cells)))
-    throw std::invalid_argument("--edge-spline: the knot spacing in cells must be finite and > 0");
+    throw std::invalid_argument("--edge-rows: the knot spacing in cells must be finite and > 0");
+  if (splines.degree > 0 && !(has_edge(kind) && edge.kind == EdgeCurve::Kind::Circle))
+    throw std::invalid_argument("--edge-rows spline needs edge sampling of a circle");
   const bool gauss = kind == SamplingKind::Gauss || kind == SamplingKind::EdgeGauss;
   Sampling s = gauss ? gauss_points(g) : grid_nodes(g);
   s.kind = kind;

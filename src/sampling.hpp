@@ -37,7 +37,7 @@ struct Sampling {
   RowSpMat S;                // points x unknowns
   int edge_begin = 0;
   EdgePoints edge;           // the edge rows' points, normals and angles
-  int edge_spline_degree = 0;  // > 0: the edge rows are B-spline averages (D25), their points the knots
+  int edge_spline_degree = 0;  // > 0: the edge rows are B-spline averages, their points the knots
   int size() const { return static_cast<int>(x.size()); }
   int edge_size() const { return size() - edge_begin; }
   // Whether every row is a bound on one nodal value (row q on interior node q).
@@ -47,7 +47,7 @@ struct Sampling {
 // `edge` is used by the Edge kinds only: they sample it, and drop the interior samples that lie
 // on it (a node on the circle would repeat an edge point, or stand for the line as an area).
 // With splines.degree > 0 (circles only) each edge row is the constraint averaged against a
-// B-spline of the angle (D25); degree 0: one row per point, about a cell apart.
+// B-spline of the angle; degree 0: one row per point, about a cell apart.
 Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge = {}, const EdgeSplines& splines = {});
 const char* to_string(SamplingKind kind);
 // The sampling named by to_string; throws std::invalid_argument naming --sampling otherwise.

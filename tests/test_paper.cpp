@@ -129,6 +129,10 @@ TEST(Paper, NumberedEquationsAndTaggedCodeMatch) {
   }
   for (const auto& eq : in_code) EXPECT_TRUE(in_doc.count(eq)) << "code is tagged Eq. (" << eq << ") but the document does not number it";
   for (const auto& eq : derivation_only) EXPECT_FALSE(in_code.count(eq)) << "(" << eq << ") is listed as derivation-only but is tagged in code";
+  // The document's own equations (D1, D2, ...): every one the code names is numbered there.
+  const std::set<std::string> d_doc = matches(doc, std::regex(R"(\\tag\{(D[0-9]+)\})"));
+  const std::set<std::string> d_code = matches(all_sources(), std::regex(R"(\((D[0-9]+)\))"));
+  for (const auto& eq : d_code) EXPECT_TRUE(d_doc.count(eq)) << "code names (" << eq << ") but the document does not number it";
 }
 
 TEST(Paper, EveryIncludedResultIsMadeByTheMakefile) {

@@ -121,6 +121,9 @@ TEST(Reproducible, TheComparisonCatchesANumberChangedBeyondItsLastDigit) {
   EXPECT_FALSE(plate::compare_tables(committed, std::string(committed).replace(committed.find("gauss"), 5, "nodes")).agrees);
   // Digits printed to a different depth compare at the coarser one; a bound holds a value below it.
   EXPECT_TRUE(plate::compare_tables("x,0.0976921,2", "x,0.09769209522,2").agrees);
+  EXPECT_FALSE(plate::compare_tables("e,1e-09", "e,1e-08").agrees);  // a tenfold change is not a lost digit
+  EXPECT_FALSE(plate::compare_tables("n,16,1", "n,16,0").agrees);     // flags and counts are exact
+  EXPECT_FALSE(plate::compare_tables("(5a)", "(6a)").agrees);
   EXPECT_FALSE(plate::compare_tables("x,0.0976921,2", "x,0.09769229522,2").agrees);
   EXPECT_TRUE(plate::compare_tables("e,< 3e-11", "e,2.9e-11").agrees);
   EXPECT_FALSE(plate::compare_tables("e,< 3e-11", "e,5e-11").agrees);

@@ -161,9 +161,10 @@ std::string answer(const Study& s) {
   std::ostringstream o;
   const RimSeries& y = s.yardstick.finest;
   o << "**The plate's answer** (the rim-contact series, no grid; its bars are the change from the truncation before): "
-       "max w = " << rim_digits(y.max_w().w) << " +- " << fmt_up(s.yardstick.bar_max_w) << ", total contact force = "
-    << rim_digits(y.total_force()) << " +- " << fmt_up(s.yardstick.bar_force) << ", q(0) = " << rim_digits(y.q(0))
-    << " +- " << fmt_up(s.yardstick.bar_q0) << ", q(pi/4) = " << rim_digits(y.q(M_PI / 4)) << " +- "
+       "max w = " << rim_digits(y.max_w().w, s.yardstick.bar_max_w) << " +- " << fmt_up(s.yardstick.bar_max_w)
+    << ", total contact force = " << rim_digits(y.total_force(), s.yardstick.bar_force) << " +- "
+    << fmt_up(s.yardstick.bar_force) << ", q(0) = " << rim_digits(y.q(0), s.yardstick.bar_q0) << " +- "
+    << fmt_up(s.yardstick.bar_q0) << ", q(pi/4) = " << rim_digits(y.q(M_PI / 4), s.yardstick.bar_q45) << " +- "
     << fmt_up(s.yardstick.bar_q45) << ".\n\n";
   auto one = [](const Extrapolation& e) {
     return fmt_above(e.limit, e.limit_noise, 9, 'g') + " +- " + bar_number(e, 2) + " (" +
@@ -319,7 +320,9 @@ int main(int argc, char** argv) {
     Study s;
     s.yardstick = rim_answer(rim_scene(scene));
     if (!s.yardstick.premise.holds || !s.yardstick.settled)
-      throw std::runtime_error("the rim-contact series gives no answer to measure against: " + s.yardstick.premise.why);
+      throw std::runtime_error("the rim-contact series gives no answer to measure against: " +
+                               (s.yardstick.premise.holds ? std::string("its truncations have not settled")
+                                                          : "its premise fails: " + s.yardstick.premise.why));
     for (int n = coarsest; n <= finest; n *= 2) s.grids.push_back(n);
     std::ostringstream timings;
     timings << "# continuum run times in seconds (assembly and exact solve, grid-sequenced); not byte-identical\n"

@@ -327,7 +327,7 @@ bool against_series(std::ostream& md, const Setup& u, const Runs& runs) {
     const auto found = series.find(q.column);
     if (found == series.end()) continue;
     const auto [value, bar] = found->second;
-    md << "| " << q.name << " | " << rim_digits(value);
+    md << "| " << q.name << " | " << rim_digits(value, bar);
     for (const auto* ser : {&runs.ff, &runs.edge}) {
       const Extrapolation e = fit(*ser, q);
       const double difference = e.limit - value, allowed = std::max(e.bar, e.bar_noise) + bar;

@@ -251,7 +251,7 @@ void rim_series_numbers(Numbers& num, const std::string& results) {
   const CsvTable u = read_csv_table(results + "/uniform_load.csv");
   for (std::size_t r = 0; r < u.rows.size(); ++r)
     if (u.text(r, "n") != "0")
-      num.put("fe.uniform_error_" + u.text(r, "n"), fmt("%.1e", std::abs(u.number(r, "relative_error"))),
+      num.put("fe.uniform_error_" + u.text(r, "n"), u.text(r, "relative_error").substr(u.number(r, "relative_error") < 0),
               "results/uniform_load.csv n = " + u.text(r, "n") + ": |relative_error|");
   const CsvTable e = read_csv_table(results + "/continuum_error.csv");
   const std::vector<std::size_t> edge = e.where("sampling", "edge");

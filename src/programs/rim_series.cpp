@@ -30,8 +30,8 @@ std::string table_csv(const RimAnswer& a) {
        "level,harmonics,degree,corner_terms,unknowns,max_w,total_force,q_theta_0,q_theta_pi_4,edge_residual,rim_residual\n";
   for (const RimConvergenceRow& r : a.rows)
     o << r.level << ',' << r.harmonics << ',' << r.degree << ',' << r.corner_terms << ',' << r.unknowns << ','
-      << rim_digits(r.max_w) << ',' << rim_digits(r.total_force) << ',' << rim_digits(r.q0) << ','
-      << rim_digits(r.q45) << ',' << fmt_up(r.edge_residual) << ',' << fmt_up(r.rim_residual) << '\n';
+      << rim_digits(r.max_w, a.bar_max_w) << ',' << rim_digits(r.total_force, a.bar_force) << ','
+      << rim_digits(r.q0, a.bar_q0) << ',' << rim_digits(r.q45, a.bar_q45) << ',' << fmt_up(r.edge_residual) << ',' << fmt_up(r.rim_residual) << '\n';
   return o.str();
 }
 
@@ -41,14 +41,14 @@ std::string table_md(const RimAnswer& a) {
        "rim misfit |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const RimConvergenceRow& r : a.rows)
     o << "| " << r.level << " | " << r.harmonics << " | " << r.degree << " | " << r.corner_terms << " | " << r.unknowns
-      << " | " << rim_digits(r.max_w) << " | " << rim_digits(r.total_force) << " | " << rim_digits(r.q0) << " | "
-      << rim_digits(r.q45) << " | " << fmt_up(r.edge_residual) << " | " << fmt_up(r.rim_residual) << " |\n";
+      << " | " << rim_digits(r.max_w, a.bar_max_w) << " | " << rim_digits(r.total_force, a.bar_force) << " | "
+      << rim_digits(r.q0, a.bar_q0) << " | " << rim_digits(r.q45, a.bar_q45) << " | " << fmt_up(r.edge_residual) << " | " << fmt_up(r.rim_residual) << " |\n";
   o << "\nThe bars of the answer are the changes from level " << a.rows.size() - 2 << " to level " << a.rows.size() - 1
     << " (floored at 1000 u relative); the changes shrink " << (a.settled ? "at every level" : "NOT at every level")
     << ". The premise, contact along the whole rim, " << (a.premise.holds ? "holds" : "FAILS: " + a.premise.why)
-    << ": the least line load is " << rim_digits(a.premise.min_q) << " (at theta = " << fmt("%.4g", a.premise.theta_min_q)
+    << ": the least line load is " << rim_digits(a.premise.min_q, a.bar_q45) << " (at theta = " << fmt("%.4g", a.premise.theta_min_q)
     << "), and inside the disk the plate stays at least " << fmt("%.3g", a.premise.min_w_minus_R)
-    << " above the cylinder (away from the rim).\n";
+    << " above the cylinder (on rings down to a thousandth of the radius inside the rim).\n";
   return o.str();
 }
 
@@ -84,13 +84,13 @@ std::string answer_csv(const RimAnswer& a) {
   o << "# rim_series: the paper's scene by the rim-contact series, the finest truncation; bar: the change from\n"
        "# the truncation before (floored at 1000 u relative). Made by build/rim_series\n"
        "quantity,value,bar\n"
-    << "max_w," << rim_digits(peak.w) << ',' << fmt_up(a.bar_max_w) << '\n'
+    << "max_w," << rim_digits(peak.w, a.bar_max_w) << ',' << fmt_up(a.bar_max_w) << '\n'
     << "max_w_x," << rim_digits(peak.x) << ",\n"
     << "max_w_y," << rim_digits(peak.y) << ",\n"
-    << "total_force," << rim_digits(s.total_force()) << ',' << fmt_up(a.bar_force) << '\n'
-    << "mean_line_force," << rim_digits(s.q_cos.at(0)) << ',' << fmt_up(a.bar_force / (2 * M_PI * s.scene.radius)) << '\n'
-    << "q_theta_0," << rim_digits(s.q(0)) << ',' << fmt_up(a.bar_q0) << '\n'
-    << "q_theta_pi_4," << rim_digits(s.q(M_PI / 4)) << ',' << fmt_up(a.bar_q45) << '\n';
+    << "total_force," << rim_digits(s.total_force(), a.bar_force) << ',' << fmt_up(a.bar_force) << '\n'
+    << "mean_line_force," << rim_digits(s.q_cos.at(0), a.bar_force / (2 * M_PI * s.scene.radius)) << ',' << fmt_up(a.bar_force / (2 * M_PI * s.scene.radius)) << '\n'
+    << "q_theta_0," << rim_digits(s.q(0), a.bar_q0) << ',' << fmt_up(a.bar_q0) << '\n'
+    << "q_theta_pi_4," << rim_digits(s.q(M_PI / 4), a.bar_q45) << ',' << fmt_up(a.bar_q45) << '\n';
   return o.str();
 }
 
@@ -111,6 +111,7 @@ int main(int argc, char** argv) {
   app.footer(kExitStatusHelp);
   if (const int status = parse_options(app, argc, argv, "rim_series"); status >= 0) return status;
   try {
+    if (finest & (finest - 1)) throw std::invalid_argument("--finest must be 16 times a power of two (16, 32, ...)");
     const RimAnswer a = rim_answer(rim_scene(read_paper_scene(reference)), levels);
     write_file_atomically(out + "/rim_series.csv", table_csv(a));
     write_file_atomically(out + "/rim_series.md", table_md(a));

@@ -1,5 +1,7 @@
 #include "rim_report.hpp"
 
+#include "format.hpp"
+
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -27,11 +29,8 @@ std::string bar(double v) {
 }
 }  // namespace
 
-std::string rim_digits(double v) {
-  char b[40];
-  const int digits = std::clamp(static_cast<int>(-std::floor(std::log10(1000 * DBL_EPSILON))), 1, 17);
-  std::snprintf(b, sizeof b, "%.*g", digits, v);
-  return b;
+std::string rim_digits(double v, double bar) {
+  return fmt_above(v, std::max(bar, 1000 * DBL_EPSILON * std::abs(v)) / 10, 15, 'g');
 }
 
 double rim_max_abs_m12(const RimSeries& s, double nu, int k) {

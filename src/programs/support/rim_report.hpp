@@ -24,8 +24,9 @@ struct RimReport {
 // The paper's scene (reference/paper_numbers.csv) as the series' scene: unit square, f = 0.
 inline RimScene rim_scene(const PaperScene& p) { return RimScene{1, 1, p.cx, p.cy, p.radius, p.height, 0}; }
 
-// The answer's digits: those above 1000 u |v|, the floor of the series' bars (rim_answer).
-std::string rim_digits(double v);
+// A value of the series to the digits its bar leaves (the last printed at least the bar), and never
+// below 1000 u |v|, the floor of the series' bars (rim_answer), where libm's last bits could show.
+std::string rim_digits(double v, double bar = 0);
 
 // The line load on the rim at `angles` equally spaced angles from 0 (a fixed set, the same for any
 // truncation, so runs can be compared point by point).

@@ -18,6 +18,7 @@ struct Token {
   bool bound = false;  // printed as "< value"
   std::string text;    // as printed (numbers too, for messages)
   double value = 0, unit = 0;
+  bool integer = false;  // no point, no exponent: a count, a flag or a label, compared exactly
 };
 
 bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
@@ -64,7 +65,7 @@ std::vector<Token> tokens(const std::string& line) {
   std::vector<Token> out;
   std::string text;
   auto flush = [&] {
-    if (!text.empty()) out.push_back(Token{false, false, text, 0, 0});
+    if (!text.empty()) out.push_back(Token{false, false, text, 0, 0, false});
     text.clear();
   };
   for (size_t i = 0; i < line.size();) {
@@ -80,7 +81,7 @@ std::vector<Token> tokens(const std::string& line) {
     if (end > 0 && text[end - 1] == '<') bound = true, text.resize(end - 1);
     flush();
     const std::string t = line.substr(i, n);
-    out.push_back(Token{true, bound, t, std::stod(t), last_digit_unit(t)});
+    out.push_back(Token{true, bound, t, std::stod(t), last_digit_unit(t), t.find_first_of(".eE") == std::string::npos});
     i += n;
   }
   flush();
@@ -93,7 +94,11 @@ std::string quoted(const Token& t) { return "'" + std::string(t.bound ? "< " : "
 std::string disagreement(const Token& e, const Token& a) {
   if (e.number != a.number) return quoted(e) + " against " + quoted(a) + " (a number against text)";
   if (!e.number) return e.text == a.text ? "" : quoted(e) + " against " + quoted(a);
-  double tolerance = std::max(e.unit, a.unit), difference = std::abs(e.value - a.value);
+  // Printed to one depth: one unit of it. To two depths: the coarser was rounded, so half its unit,
+  // and one unit of the finer for round-off. Counts and flags: exactly.
+  double tolerance = e.unit == a.unit ? e.unit : 0.5 * std::max(e.unit, a.unit) + std::min(e.unit, a.unit);
+  if (e.integer && a.integer) tolerance = 0;
+  double difference = std::abs(e.value - a.value);
   if (e.bound != a.bound) {  // a bound against a value below it, give or take the value's last digit
     const Token& b = e.bound ? e : a;
     const Token& v = e.bound ? a : e;

@@ -3,10 +3,12 @@
 // flip flips on some machine, thread count or BLAS kernel, so no test compares tables byte for byte.
 //
 // The rule: the text between numbers is the same, and two numbers agree when they differ by at most
-// one unit in the last digit printed (the larger unit of the two). Every table here prints a digit
-// only where it is at least ten times the round-off that could change it (fmt_above), so one unit of
-// the last digit is also at least the column's round-off bound. A bound "< B" agrees with a number
-// v when |v| < B plus one unit of v's last digit, and with another bound by the same rule as numbers.
+// one unit in the last digit printed. Every table here prints a digit only where it is at least ten
+// times the round-off that could change it (fmt_above), so that unit is also at least the column's
+// round-off bound. Printed to different depths (a machine whose round-off estimate left it fewer
+// digits), they agree within half a unit of the coarser plus one of the finer. Integers (counts,
+// flags, grid sizes) must be equal. A bound "< B" agrees with a number v when |v| < B plus one unit
+// of v's last digit, and with another bound by the same rule as numbers.
 #pragma once
 #include <string>
 
