@@ -312,7 +312,7 @@ bool against_series(std::ostream& md, const Setup& u, const Runs& runs) {
   const RimAnswer y = rim_answer(rim_scene(u.scene));
   const RimSeries& s = y.finest;
   const std::map<std::string, std::pair<double, double>> series = {
-      {"max_w", {s.max_w().w, y.bar_max_w}},
+      {"max_w", {y.rows.back().max_w, y.bar_max_w}},
       {"total_force", {s.total_force(), y.bar_force}},
       {"mean_line_force", {s.q_cos.at(0), y.bar_force / (2 * M_PI * u.scene.radius)}},
       {"q_fit_0", {s.q(0), y.bar_q0}},
