@@ -12,7 +12,7 @@ set -euo pipefail
 packages=(
   g++ make cmake pkg-config
   libeigen3-dev libsuitesparse-dev libmuparser-dev libcli11-dev nlohmann-json3-dev
-  libopenblas0-pthread
+  libopenblas0-pthread libblas3  # libblas3: the reference BLAS, for the FreeFEM out-of-memory test
   libgtest-dev libgmock-dev libbenchmark-dev
   freefem++ libfreefem++ gmsh
   pandoc gnuplot-nox fonts-dejavu-extra

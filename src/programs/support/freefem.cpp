@@ -126,4 +126,33 @@ CheckValues freefem_values(const nlohmann::json& j, int cells, double radius) {
   }
 }
 
+PenaltyRun penalty_values(const nlohmann::json& j) {
+  try {
+    PenaltyRun r;
+    r.scheme = j.at("scheme").get<std::string>();
+    r.sampling = j.at("sampling").get<std::string>();
+    r.h = j.at("hmax").get<double>();
+    r.unknowns = j.at("unknowns").get<int>();
+    r.converged = j.at("converged").get<bool>();
+    r.why = j.at("why").get<std::string>();
+    r.iterations = j.at("iterations").get<int>();
+    r.eps = j.at("eps").get<double>();
+    for (const auto& l : j.at("levels"))
+      r.levels.push_back({l.at("eps").get<double>(), l.at("iterations").get<int>(), l.at("first_step").get<double>(),
+                          l.at("last_step").get<double>(), l.at("last_ratio").get<double>(),
+                          l.at("level_change").get<double>()});
+    if (j.contains("lambda1h")) r.lambda1h = j.at("lambda1h").get<double>();
+    r.max_w = j.at("max_w").get<double>();
+    r.force = j.at("total_contact_force").get<double>();
+    r.max_m12 = j.at("max_m12").get<double>();
+    r.max_density = j.at("max_contact_density").get<double>();
+    r.residual = j.at("residual").get<double>();
+    for (const auto& w : j.at("w_at")) r.w_at.push_back(w.get<double>());
+    r.seconds = j.at("seconds").get<double>();
+    return r;
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(std::string("FreeFEM's penalty JSON lacks a value: ") + e.what());
+  }
+}
+
 }  // namespace plate

@@ -1,6 +1,8 @@
-// Running the other code of the cross-check: gmsh meshes a plate with its contact circle, and
-// FreeFEM solves the contact problem on that mesh (reference/contact_hct.edp), writing JSON.
+// Running the other code of the cross-checks: gmsh meshes a plate with its contact circle, and
+// FreeFEM solves the contact problem on that mesh, exactly (reference/contact_hct.edp) or by the
+// paper's penalty method (reference/penalty_hct.edp), writing JSON.
 #pragma once
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,5 +46,31 @@ inline constexpr const char* kFreefemRoundoffRule = "30 u h^-4 relative, h the l
 // `cells` cells along a quarter of the contact circle of radius `radius`. Throws
 // std::runtime_error naming a missing key.
 CheckValues freefem_values(const nlohmann::json& j, int cells, double radius);
+
+// What reference/penalty_hct.edp reports of one run of the penalty method (2).
+struct PenaltyLevel {
+  double eps = 0;
+  int iterations = 0;
+  double first_step = 0, last_step = 0;  // max over vertices of |w^{n+1} - w^n|, first and last
+  double last_ratio = -1;                // last_step over the step before it; -1 after one step
+  double level_change = -1;              // to the previous level; -1 on the first
+};
+struct PenaltyRun {
+  std::string scheme, sampling;
+  double h = 0;  // the longest mesh edge
+  int unknowns = 0;
+  bool converged = false;  // the stopping rules were met
+  std::string why;         // why not
+  int iterations = 0;      // over all levels
+  double eps = 0;          // of the last level
+  std::vector<PenaltyLevel> levels;
+  double lambda1h = NAN;  // -eigen 1 only
+  double max_w = 0, force = 0, max_m12 = 0, max_density = 0;
+  double residual = 0;  // of (2a) at the answer, relative
+  std::vector<double> w_at;
+  double seconds = 0;
+};
+// Throws std::runtime_error naming a missing key.
+PenaltyRun penalty_values(const nlohmann::json& j);
 
 }  // namespace plate

@@ -1,0 +1,178 @@
+// The FreeFEM penalty script (reference/penalty_hct.edp) checked against what it must reproduce
+// without being told: the exact script's answer as eps -> 0 at the rate the penalty derivation gives,
+// its two schemes agreeing at a fixed eps, the first eigenvalue of the clamped square
+// (Bjorstad & Tjostheim) and the linear scheme's contraction 1/(1 + eps lambda_1h) (Theorem 2). Also
+// that it refuses bad arguments and says so when it does not converge or a solve fails. The meshes
+// are the coarsest two of the cross-check: a few seconds each.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "freefem.hpp"
+#include "paper_case.hpp"
+#include "published.hpp"
+#include "run_program.hpp"
+#include "scratch.hpp"
+
+using namespace plate;
+
+namespace {
+const std::string kRef = std::string(PLATE_SOURCE_DIR) + "/reference";
+const std::string kPenalty = kRef + "/penalty_hct.edp";
+const std::string kExact = kRef + "/contact_hct.edp";
+
+// The scratch folder of this test's process (ctest runs each test in a process of its own).
+const Scratch& scratch() {
+  static const Scratch s("penalty_freefem");
+  return s;
+}
+
+// The paper's square meshed at level n (4 n cells per quarter circle), and the check points file.
+std::string mesh(int n) {
+  const std::string msh = scratch().path("square" + std::to_string(n) + ".msh");
+  if (!std::filesystem::exists(msh)) gmsh_mesh(kRef + "/square_with_circle.geo", circle_numbers(paper_scene(), n), msh);
+  return msh;
+}
+std::string points() {
+  const std::string pts = scratch().path("points.txt");
+  if (!std::filesystem::exists(pts)) write_points(pts, {{0.5, 0.25}, {0.25, 0.25}});
+  return pts;
+}
+
+int runs = 0;
+PenaltyRun penalty(int n, const std::string& args) {
+  const std::string out = scratch().path("run" + std::to_string(++runs) + ".json");
+  return penalty_values(run_freefem(kPenalty, mesh(n), scene_args(paper_scene(), points()) + " " + args, out));
+}
+
+// The script run as a user would, its exit status and what it printed.
+Captured run_script(const std::string& edp, const std::string& args) {
+  setenv("FF_LOADPATH", "/usr/lib/freefem++", 0);
+  return run_captured("FreeFem++ -nw -v 0 '" + edp + "' " + args);
+}
+}  // namespace
+
+TEST(PenaltyFreeFem, RefusesBadArgumentsNamingThem) {
+  const std::string base = "-mesh '" + mesh(1) + "' -points '" + points() + "' -out '" + scratch().path("bad.json") + "'";
+  const struct {
+    std::string args, names;
+  } cases[] = {
+      {"-tol nan", "-tol"},          {"-tol -1", "-tol"},           {"-eps 0", "-eps"},
+      {"-eps-min 1", "-eps-min"},    {"-scheme newton", "-scheme"}, {"-sampling edges", "-sampling"},
+      {"-maxit 0", "-maxit"},        {"-nu 0.5", "-nu"},            {"-R inf", "-R"},
+      {"-r nan", "-r"},              {"-continuation 2", "-continuation"},
+      {"-eigen yes", "-eigen"},      {"-unknown 1", "-unknown"},    {"-tol", "-tol"},
+  };
+  for (const auto& c : cases) {
+    const Captured r = run_script(kPenalty, base + " " + c.args);
+    EXPECT_EQ(r.status, 2) << c.args << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.names), std::string::npos) << c.args << "\n" << r.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(scratch().path("bad.json")));
+  const Captured nomesh = run_script(kPenalty, "-points '" + points() + "'");
+  EXPECT_EQ(nomesh.status, 2) << nomesh.output;
+}
+
+TEST(PenaltyFreeFem, SaysSoWhenALevelRunsOutOfIterations) {
+  const std::string out = scratch().path("maxit.json");
+  const Captured r = run_script(kPenalty, "-mesh '" + mesh(1) + "' -points '" + points() + "' -maxit 1 -out '" + out + "'");
+  EXPECT_EQ(r.status, 3) << r.output;
+  EXPECT_NE(r.output.find("did not converge"), std::string::npos) << r.output;
+  std::ifstream in(out);
+  const PenaltyRun run = penalty_values(nlohmann::json::parse(in));
+  EXPECT_FALSE(run.converged);
+  EXPECT_NE(run.why.find("-maxit"), std::string::npos) << run.why;
+}
+
+// Both constrain the same vertex values, so the penalised solution tends to the exact one at the
+// rate eps (the document's penalty estimate): each decade of eps divides the difference by about 10.
+TEST(PenaltyFreeFem, TendsToTheExactScriptsAnswerAtTheRateEps) {
+  const nlohmann::json exact =
+      run_freefem(kExact, mesh(1), scene_args(paper_scene(), points()), scratch().path("exact.json"));
+  ASSERT_TRUE(exact.at("converged").get<bool>());
+  const double w0 = exact.at("max_w").get<double>(), f0 = exact.at("total_contact_force").get<double>();
+  std::vector<double> dw, df;
+  for (double eps : {1e-6, 1e-7, 1e-8}) {
+    std::ostringstream a;
+    a << "-scheme nonlinear -continuation 0 -eps " << eps << " -tol 1e-13";
+    const PenaltyRun r = penalty(1, a.str());
+    ASSERT_TRUE(r.converged) << r.why;
+    EXPECT_LT(r.residual, 1e-9);
+    EXPECT_LT(r.max_w, w0);  // the penalty lets the plate sink into the obstacle a little
+    dw.push_back(w0 - r.max_w);
+    df.push_back(std::abs(f0 - r.force));
+  }
+  for (size_t k = 0; k + 1 < dw.size(); ++k) {
+    EXPECT_NEAR(dw[k] / dw[k + 1], 10, 1) << "max w, step " << k;
+    EXPECT_NEAR(df[k] / df[k + 1], 10, 1) << "force, step " << k;
+  }
+  EXPECT_LT(dw.back(), 1e-4 * w0);
+}
+
+// (3a) and (5a) solve the same discrete problem (2a): at one eps, stopped far below the difference
+// that matters, they must give the same w_eps.
+TEST(PenaltyFreeFem, NonlinearAndLinearSchemesGiveTheSameSolutionAtOneEps) {
+  const PenaltyRun a = penalty(1, "-scheme nonlinear -continuation 0 -eps 1e-4 -tol 1e-12");
+  const PenaltyRun b = penalty(1, "-scheme linear -continuation 0 -eps 1e-4 -tol 1e-12");
+  ASSERT_TRUE(a.converged && b.converged) << a.why << b.why;
+  EXPECT_GT(b.iterations, 5 * a.iterations);  // the linear scheme contracts only by 1/(1 + eps lambda_1h)
+  // (5a) stopped at a step tol is within tol q / (1 - q) of its fixed point; q < 0.9 at eps = 1e-4.
+  EXPECT_NEAR(a.max_w, b.max_w, 1e-10);
+  EXPECT_NEAR(a.force, b.force, 1e-8 * a.force);
+  for (size_t k = 0; k < a.w_at.size(); ++k) EXPECT_NEAR(a.w_at[k], b.w_at[k], 1e-10) << k;
+}
+
+// With no contact (the obstacle far below, a uniform load), (5a) is a linear iteration whose slowest
+// mode contracts by exactly 1/(1 + eps lambda_1h) (measured where the steps, 1e-8, are still far
+// above round-off; below 1e-9 round-off moves the ratio by 1e-6); and lambda_1h tends, from below with the lumped
+// mass, to the published first eigenvalue of the clamped square.
+TEST(PenaltyFreeFem, LinearSchemeContractsByTheFirstEigenvalueWhichTendsToThePublishedOne) {
+  const double lambda1 = plate_constant(kRef, "lambda1");
+  std::vector<double> err;
+  for (int n : {1, 2}) {
+    const double eps = 1e-4;
+    const PenaltyRun r = penalty(n, "-R -1 -load 1 -continuation 0 -eps 1e-4 -tol 1e-8 -eigen 1");
+    ASSERT_TRUE(r.converged) << r.why;
+    ASSERT_EQ(r.levels.size(), 1u);
+    EXPECT_NEAR(r.levels[0].last_ratio, 1 / (1 + eps * r.lambda1h), 1e-6) << "n = " << n;
+    EXPECT_LT(r.lambda1h, lambda1);
+    err.push_back(lambda1 - r.lambda1h);
+  }
+  EXPECT_LT(err[1], err[0] / 2);
+}
+
+// f = 0 and an obstacle of height R: the answer is R times the answer for R = 1.
+TEST(PenaltyFreeFem, AnswerIsProportionalToTheObstaclesHeight) {
+  const PenaltyRun a = penalty(1, "-scheme nonlinear -R 0.025 -eps 1e-8 -eps-min 1e-8 -continuation 0 -tol 1e-14");
+  const PenaltyRun b = penalty(1, "-scheme nonlinear -R 0.1 -eps 1e-8 -eps-min 1e-8 -continuation 0 -tol 1e-14");
+  ASSERT_TRUE(a.converged && b.converged);
+  EXPECT_NEAR(b.max_w, 4 * a.max_w, 1e-12);
+  EXPECT_NEAR(b.force, 4 * a.force, 1e-9 * b.force);
+  EXPECT_NEAR(b.max_m12, 4 * a.max_m12, 1e-9 * b.max_m12);
+}
+
+// A factorisation that runs out of memory must not pass for an answer: a nonzero exit, and no JSON
+// that says "converged". The address space is capped at 400 MB, below what UMFPACK needs to factor the
+// mesh n = 8 (31 000 unknowns; about 7 s uncapped). OpenBLAS, asked for memory it cannot have, waits
+// for it forever, so the scripts run here on the reference BLAS (libblas3), which just fails.
+TEST(PenaltyFreeFem, AFailedSolveGivesANonzeroExitAndNoAnswer) {
+  const std::string refblas = "/usr/lib/x86_64-linux-gnu/blas";
+  if (!std::filesystem::exists(refblas + "/libblas.so.3")) GTEST_SKIP() << "no reference BLAS in " << refblas << " (libblas3)";
+  const std::string msh = mesh(8);
+  for (const std::string& edp : {kPenalty, kExact}) {
+    const std::string out = scratch().path("oom.json");
+    std::filesystem::remove(out);
+    const Captured r = run_captured("ulimit -v 400000; LD_LIBRARY_PATH=" + refblas +
+                                    " FF_LOADPATH=/usr/lib/freefem++ timeout 120 FreeFem++ -nw -v 0 '" + edp + "' -mesh '" +
+                                    msh + "' -points '" + points() + "' -out '" + out + "'");
+    EXPECT_NE(r.status, 0) << edp << "\n" << r.output;
+    EXPECT_NE(r.status, 124) << edp << ": did not end within two minutes";
+    std::ifstream in(out);
+    std::stringstream text;
+    text << in.rdbuf();
+    EXPECT_EQ(text.str().find("\"converged\": true"), std::string::npos) << edp << "\n" << text.str();
+  }
+}
