@@ -4,7 +4,7 @@ BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
 DRIVERS := $(BUILD)/table $(BUILD)/fig1 $(BUILD)/fig2 $(BUILD)/contraction $(BUILD)/hard_cases $(BUILD)/bench $(BUILD)/peer_snesvi \
            $(BUILD)/micro_bench $(BUILD)/continuum $(BUILD)/time_to_accuracy $(BUILD)/prose_numbers $(BUILD)/compare_tables $(BUILD)/rim_series
-BINS  := $(BUILD)/plate $(BUILD)/crosscheck $(BUILD)/plate_tests $(DRIVERS)
+BINS  := $(BUILD)/plate $(BUILD)/crosscheck $(BUILD)/crosscheck_penalty $(BUILD)/plate_tests $(DRIVERS)
 PAPER_NUMBERS := reference/paper_numbers.csv
 
 TABLES    := results/table.md results/table.csv results/table_fine.md results/table_fine.csv
@@ -17,6 +17,9 @@ RESULTS   := $(TABLES) $(CONTRACTION) $(FIG1_DATA) $(FIG2_DATA) $(FIGURES)
 CROSSCHECK := results/crosscheck.md results/crosscheck.csv results/crosscheck_agreement.csv results/crosscheck_rim.csv \
               results/crosscheck_timings.csv
 RIM_FIGURE := results/rim.svg results/rim.png
+CROSSCHECK_PENALTY := results/crosscheck_penalty.md results/crosscheck_penalty_table.csv results/crosscheck_penalty_eps.csv \
+                      results/crosscheck_penalty_fig2.csv
+PENALTY_FIGURE := results/crosscheck_penalty_fig2.svg results/crosscheck_penalty_fig2.png
 HARD_CASES := results/hard_cases.md results/hard_cases_input.md results/hard_cases_point.csv results/hard_cases_timings.csv
 NUMBERS   := results/numbers.csv results/numbers_machine.csv
 CONTINUUM_DATA := results/continuum.md results/continuum.csv results/continuum_error.csv results/continuum_q.csv \
@@ -28,7 +31,7 @@ TTA       := results/time_to_accuracy.csv results/time_to_accuracy.md
 BENCH_ALL := $(BENCH) results/speed_vs_error.svg results/speed_vs_error.png results/micro_benchmarks.md \
              $(TTA) results/time_to_accuracy.svg results/time_to_accuracy.png
 PAPER_INPUTS := paper/paper.md paper/style.css $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp src/programs/*.cpp src/programs/support/*.cpp src/programs/support/*.hpp) \
-                $(RESULTS) $(RIM_SERIES) $(CONTINUUM) $(CROSSCHECK) $(RIM_FIGURE) $(HARD_CASES) $(BENCH_ALL) $(NUMBERS)
+                $(RESULTS) $(RIM_SERIES) $(CONTINUUM) $(CROSSCHECK) $(RIM_FIGURE) $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) $(HARD_CASES) $(BENCH_ALL) $(NUMBERS)
 # The packages whose versions the document's reference list gives.
 VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread libmuparser-dev libcli11-dev freefem++ gmsh \
              libpetsc-real-dev libmumps-dev pandoc gnuplot-nox g++ cmake libgtest-dev libbenchmark-dev
@@ -60,11 +63,19 @@ build: $(BINS) ## compile the solver, the plate program and the tests
 test: build ## run the test suite
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
-crosscheck: results/crosscheck.md ## FreeFEM (HCT, gmsh) against this code: results/crosscheck.md
+crosscheck: results/crosscheck.md $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) ## FreeFEM (HCT, gmsh) against this code, exactly and by the paper's penalty method: results/crosscheck.md, results/crosscheck_penalty.md
 
 $(CROSSCHECK) &: $(BUILD)/crosscheck reference/square_with_circle.geo reference/disk_with_punch.geo reference/contact_hct.edp reference/plate_constants.csv $(PAPER_NUMBERS) | deps
 	$(call say,"results/crosscheck.md: FreeFEM and this code on the square; FreeFEM on the disk","1 min")
 	$(BUILD)/crosscheck --out results --work $(BUILD)/crosscheck-work
+
+# The penalty cross-check reads our table, contraction factors and Fig. 2 data from results/.
+$(CROSSCHECK_PENALTY) &: $(BUILD)/crosscheck_penalty reference/square_with_circle.geo reference/penalty_hct.edp reference/contact_hct.edp \
+                         reference/paper_table.csv reference/plate_constants.csv $(PAPER_NUMBERS) results/table.csv results/contraction.csv \
+                         results/fig2.csv results/fig2_mesh.csv | deps
+	$(call say,"results/crosscheck_penalty.md: the FreeFEM penalty script against the table of the paper and this code at fixed eps and in Fig. 2","9 min")
+	$(BUILD)/crosscheck_penalty --out results --work $(BUILD)/crosscheck-penalty-work
+$(PENALTY_FIGURE): results/crosscheck_penalty_fig2.csv
 
 hard-cases: results/hard_cases.md ## tiny eps, area and point contact, n = 512, every bad input: results/hard_cases.md
 
@@ -178,22 +189,24 @@ CHECKED_fig1        := fig1_points.csv fig1_surface.dat fig1_contact.dat
 CHECKED_fig2        := fig2.csv fig2_mesh.csv fig2_fit.md fig2_mesh.md
 CHECKED_continuum   := continuum.md continuum.csv continuum_error.csv continuum_q.csv continuum_answer.md continuum_limits.csv
 CHECKED_crosscheck  := crosscheck.md crosscheck.csv crosscheck_agreement.csv crosscheck_rim.csv
+CHECKED_crosscheck_penalty := crosscheck_penalty.md crosscheck_penalty_table.csv crosscheck_penalty_eps.csv crosscheck_penalty_fig2.csv
 CHECKED_rim_series  := rim_series.md rim_series.csv rim_answer.csv uniform_load.csv
 CHECK_DIR := $(BUILD)/check-results
 
 check-results: build ## rebuild every deterministic table into build/check-results and compare it with results/ (about 15 min)
-	$(call say,"check-results: rim_series table contraction fig1 fig2 continuum crosscheck rebuilt and compared with results/","15 min")
+	$(call say,"check-results: rim_series table contraction fig1 fig2 continuum crosscheck crosscheck_penalty rebuilt and compared with results/","15 min")
 	@rm -rf $(CHECK_DIR); status=0; \
-	for d in rim_series table contraction fig1 fig2 continuum crosscheck; do \
+	for d in rim_series table contraction fig1 fig2 continuum crosscheck crosscheck_penalty; do \
 	  mkdir -p $(CHECK_DIR)/$$d; \
 	  extra=; [ $$d = crosscheck ] && extra="--work $(CHECK_DIR)/crosscheck-work"; \
+	  [ $$d = crosscheck_penalty ] && extra="--work $(CHECK_DIR)/crosscheck-penalty-work"; \
 	  echo "== $$d"; \
 	  $(BUILD)/$$d --out $(CHECK_DIR)/$$d $$extra > $(CHECK_DIR)/$$d.log 2>&1 \
 	    || { echo "$$d failed (exit $$?); its output is in $(CHECK_DIR)/$$d.log"; status=1; continue; }; \
 	  case $$d in \
 	    table) files="$(CHECKED_table)";; contraction) files="$(CHECKED_contraction)";; fig1) files="$(CHECKED_fig1)";; \
 	    fig2) files="$(CHECKED_fig2)";; continuum) files="$(CHECKED_continuum)";; crosscheck) files="$(CHECKED_crosscheck)";; \
-	    rim_series) files="$(CHECKED_rim_series)";; \
+	    rim_series) files="$(CHECKED_rim_series)";; crosscheck_penalty) files="$(CHECKED_crosscheck_penalty)";; \
 	  esac; \
 	  $(BUILD)/compare_tables --expected results --rebuilt $(CHECK_DIR)/$$d $$files || status=1; \
 	done; \

@@ -1,0 +1,21 @@
+# Fig. 2 twice: max|w|, max|m12| and the total contact force against the obstacle height R, from
+# FreeFEM's penalty script (points) and from this code (lines), both read from
+# results/crosscheck_penalty_fig2.csv (written by build/crosscheck_penalty). Scaled to share the axis.
+# Usage: gnuplot -e "fmt='svg'; out='results/crosscheck_penalty_fig2.svg'" paper/figures/crosscheck_penalty_fig2.gp
+if (fmt eq 'svg') { set terminal svg size 640,430 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 640,430 font 'Helvetica,11' }
+set output out
+set datafile separator ','
+set key top left box opaque
+set xlabel 'obstacle height R'
+set ylabel 'scaled as in the key'
+set grid
+set xrange [0:*]
+set yrange [0:*]
+data = 'results/crosscheck_penalty_fig2.csv'
+# columns: R, freefem max_w, max_m12, force, ours max_w, max_m12, force
+plot data using 1:($5 * 100) with lines lc 3 title 'max|w| x 10^2: this code', \
+     data using 1:($2 * 100) with points pt 2 ps 1.3 lc 3 title 'FreeFEM', \
+     data using 1:($6 * 10) with lines lc 2 title 'max|m12| x 10: this code', \
+     data using 1:($3 * 10) with points pt 6 ps 1.3 lc 2 title 'FreeFEM', \
+     data using 1:($7 * 0.1) with lines lc 4 title 'total force x 10^{-1}: this code', \
+     data using 1:($4 * 0.1) with points pt 4 ps 1.3 lc 4 title 'FreeFEM'
