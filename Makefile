@@ -41,7 +41,7 @@ say = @printf '\n== make: %s (about %s)\n' $(1) $(2)
 
 .PHONY: all test deps build results paper document crosscheck hard-cases continuum rim-series bench check-results clean help FORCE
 
-all: build results rim-series continuum crosscheck hard-cases bench paper ## build, then every result, figure, benchmark and the document (about 30 min from scratch)
+all: build results rim-series continuum crosscheck hard-cases bench paper ## build, then every result, figure, benchmark and the document (about an hour from scratch)
 
 help: ## list the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 12
@@ -152,7 +152,7 @@ results/time_to_accuracy.svg results/time_to_accuracy.png: results/time_to_accur
 paper: results/paper.html ## the literate document: results/paper.html (self-contained, opens offline); remakes stale results first
 
 # A fresh clone's programs are newer than the results it carries, so `make paper` would remake
-# them all (about 35 min). This renders the document from the results as they are.
+# them all (about an hour). This renders the document from the results as they are.
 document: $(BUILD)/prose_numbers results/versions.csv | deps ## results/paper.html from the results/ present, remaking none of them (10 s)
 	$(BUILD)/prose_numbers --out results
 	$(render_paper)
@@ -193,8 +193,8 @@ CHECKED_crosscheck_penalty := crosscheck_penalty.md crosscheck_penalty_table.csv
 CHECKED_rim_series  := rim_series.md rim_series.csv rim_answer.csv uniform_load.csv
 CHECK_DIR := $(BUILD)/check-results
 
-check-results: build ## rebuild every deterministic table into build/check-results and compare it with results/ (about 15 min)
-	$(call say,"check-results: rim_series table contraction fig1 fig2 continuum crosscheck crosscheck_penalty rebuilt and compared with results/","15 min")
+check-results: build ## rebuild every deterministic table into build/check-results and compare it with results/ (about 35 min)
+	$(call say,"check-results: rim_series table contraction fig1 fig2 continuum crosscheck crosscheck_penalty rebuilt and compared with results/","35 min")
 	@rm -rf $(CHECK_DIR); status=0; \
 	for d in rim_series table contraction fig1 fig2 continuum crosscheck crosscheck_penalty; do \
 	  mkdir -p $(CHECK_DIR)/$$d; \

@@ -125,6 +125,15 @@ struct Fig2Row {
   double our_w = 0, our_m12 = 0, our_force = 0;
 };
 
+// A limit in one table cell: "value +- bar", with the order where it is steady; else the finest
+// value and its last increment (richardson.hpp). The report says which is which once.
+std::string brief(const Extrapolation& e) {
+  const size_t t = e.orders.size();
+  std::string cell = fmt_above(e.limit, e.limit_noise, 10, 'g') + " +- " + fmt_above(e.bar, e.bar_noise, 2);
+  if (e.steady) cell += " (order " + format_order(e.orders[t - 1], e.order_noise[t - 1]) + ")";
+  return cell;
+}
+
 // FreeFEM's Fig. 2 quantities over R must agree to this (relative): (2) with f = 0 is positively
 // homogeneous in (R, w), so only round-off separates them (measured: about 1e-10 at eps = 1e-10).
 constexpr double kLinearity = 1e-8;
@@ -187,19 +196,19 @@ int main(int argc, char** argv) {
           if (!r.converged) all_ok = false;
         }
         table.push_back(row);
-    }
-    for (int n : s.table_levels) {
-      PaperScene below = s.scene;
-      below.height = -1;  // far under the plate: no contact
-      const std::string out = s.work + "/eigen" + std::to_string(n) + ".json";
-      const PenaltyRun r = penalty_values(run_freefem(
-          s.penalty, mesh(s, n),
-          scene_args(below, points(s)) + " -load 1 -continuation 0 -eigen 1 -tol " + fmt("%g", kEigenStop) + eps_arg(kEigenEps), out));
-      EigenCheck e{n, r.h, r.lambda1h, 1 / (1 + kEigenEps * r.lambda1h), r.levels.at(0).last_ratio, false};
-      e.ok = r.converged && std::abs(e.measured - e.q) <= kEigenTol;
-      all_ok = all_ok && e.ok;
-      eigen.push_back(e);
-    }
+      }
+      for (int n : s.table_levels) {
+        PaperScene below = s.scene;
+        below.height = -1;  // far under the plate: no contact
+        const std::string out = s.work + "/eigen" + std::to_string(n) + ".json";
+        const PenaltyRun r = penalty_values(run_freefem(
+            s.penalty, mesh(s, n),
+            scene_args(below, points(s)) + " -load 1 -continuation 0 -eigen 1 -tol " + fmt("%g", kEigenStop) + eps_arg(kEigenEps), out));
+        EigenCheck e{n, r.h, r.lambda1h, 1 / (1 + kEigenEps * r.lambda1h), r.levels.at(0).last_ratio, false};
+        e.ok = r.converged && std::abs(e.measured - e.q) <= kEigenTol;
+        all_ok = all_ok && e.ok;
+        eigen.push_back(e);
+      }
     }
     auto our_lambda = [&](const std::string& sampling) {
       for (size_t r : ours_contraction.where("sampling", sampling))
@@ -296,34 +305,34 @@ int main(int argc, char** argv) {
         if (std::abs(R - s.scene.height) <= 1e-12 * s.scene.height) ff_fine = f;
         fig2.push_back({R, f.max_w, f.max_m12, f.force, ours_fig2.number(r, "max_w"), ours_fig2.number(r, "max_m12"),
                         ours_fig2.number(r, "force")});
-    }
-    // Judged where the quantity converges (max w, the force), at the paper's R on each code's finest
-    // grid: the two differ by at most the sum of their last mesh increments (FreeFEM: its mesh and the
-    // one below; ours: the finest two nodal rows of fig2_mesh.csv), the bar of a sequence whose order
-    // is not steady. max |m12| at the rim and the nodal maximum of xi depend on the grid by nature:
-    // shown, not judged.
-    const CsvTable ours_mesh = read_csv_table(s.results + "/fig2_mesh.csv");
-    for (size_t r : ours_mesh.where("sampling", "nodes")) mesh_n = std::max(mesh_n, static_cast<int>(ours_mesh.number(r, "n")));
-    double our_w_prev = NAN, our_f_prev = NAN, our_w_fine = NAN, our_f_fine = NAN;
-    for (size_t r : ours_mesh.where("sampling", "nodes")) {
-      const int n = static_cast<int>(ours_mesh.number(r, "n"));
-      if (n == mesh_n / 2) our_w_prev = ours_mesh.number(r, "max_w"), our_f_prev = ours_mesh.number(r, "force");
-      if (n == mesh_n) our_w_fine = ours_mesh.number(r, "max_w"), our_f_fine = ours_mesh.number(r, "force");
-    }
-    if (std::isnan(our_w_prev) || std::isnan(our_w_fine))
-      throw std::runtime_error(ours_mesh.path + " lacks the nodal rows n = " + std::to_string(mesh_n / 2) + " and " + std::to_string(mesh_n));
-    const PenaltyRun ff_coarse = penalty(s, s.fig2_level / 2, "-scheme nonlinear -continuation 0 -tol 1e-13" + eps_arg(s.fig2_eps), s.scene.height);
-    if (!ff_fine) throw std::runtime_error(ours_fig2.path + " has no row at the paper's R = " + fmt("%g", s.scene.height));
-    if (!ff_coarse.converged) throw std::runtime_error("penalty_hct.edp did not converge at the paper's R: " + ff_coarse.why);
-    fig2_w_diff = rel(ff_fine->max_w, our_w_fine), fig2_f_diff = rel(ff_fine->force, our_f_fine);
-    fig2_w_tol = rel(ff_fine->max_w, ff_coarse.max_w) + rel(our_w_fine, our_w_prev);
-    fig2_f_tol = rel(ff_fine->force, ff_coarse.force) + rel(our_f_fine, our_f_prev);
-    // And FreeFEM's quantities are linear in R, as the paper's Fig. 2 shows and (2) implies for f = 0.
-    for (const Fig2Row& f : fig2)
-      fig2_linearity = std::max({fig2_linearity, rel(f.ff_w / f.R, fig2[0].ff_w / fig2[0].R),
-                                 rel(f.ff_force / f.R, fig2[0].ff_force / fig2[0].R), rel(f.ff_m12 / f.R, fig2[0].ff_m12 / fig2[0].R)});
-    const bool fig2_ok = fig2_w_diff <= fig2_w_tol && fig2_f_diff <= fig2_f_tol && fig2_linearity <= kLinearity;
-    all_ok = all_ok && fig2_ok;
+      }
+      // Judged where the quantity converges (max w, the force), at the paper's R on each code's finest
+      // grid: the two differ by at most the sum of their last mesh increments (FreeFEM: its mesh and the
+      // one below; ours: the finest two nodal rows of fig2_mesh.csv), the bar of a sequence whose order
+      // is not steady. max |m12| at the rim and the nodal maximum of xi depend on the grid by nature:
+      // shown, not judged.
+      const CsvTable ours_mesh = read_csv_table(s.results + "/fig2_mesh.csv");
+      for (size_t r : ours_mesh.where("sampling", "nodes")) mesh_n = std::max(mesh_n, static_cast<int>(ours_mesh.number(r, "n")));
+      double our_w_prev = NAN, our_f_prev = NAN, our_w_fine = NAN, our_f_fine = NAN;
+      for (size_t r : ours_mesh.where("sampling", "nodes")) {
+        const int n = static_cast<int>(ours_mesh.number(r, "n"));
+        if (n == mesh_n / 2) our_w_prev = ours_mesh.number(r, "max_w"), our_f_prev = ours_mesh.number(r, "force");
+        if (n == mesh_n) our_w_fine = ours_mesh.number(r, "max_w"), our_f_fine = ours_mesh.number(r, "force");
+      }
+      if (std::isnan(our_w_prev) || std::isnan(our_w_fine))
+        throw std::runtime_error(ours_mesh.path + " lacks the nodal rows n = " + std::to_string(mesh_n / 2) + " and " + std::to_string(mesh_n));
+      const PenaltyRun ff_coarse = penalty(s, s.fig2_level / 2, "-scheme nonlinear -continuation 0 -tol 1e-13" + eps_arg(s.fig2_eps), s.scene.height);
+      if (!ff_fine) throw std::runtime_error(ours_fig2.path + " has no row at the paper's R = " + fmt("%g", s.scene.height));
+      if (!ff_coarse.converged) throw std::runtime_error("penalty_hct.edp did not converge at the paper's R: " + ff_coarse.why);
+      fig2_w_diff = rel(ff_fine->max_w, our_w_fine), fig2_f_diff = rel(ff_fine->force, our_f_fine);
+      fig2_w_tol = rel(ff_fine->max_w, ff_coarse.max_w) + rel(our_w_fine, our_w_prev);
+      fig2_f_tol = rel(ff_fine->force, ff_coarse.force) + rel(our_f_fine, our_f_prev);
+      // And FreeFEM's quantities are linear in R, as the paper's Fig. 2 shows and (2) implies for f = 0.
+      for (const Fig2Row& f : fig2)
+        fig2_linearity = std::max({fig2_linearity, rel(f.ff_w / f.R, fig2[0].ff_w / fig2[0].R),
+                                   rel(f.ff_force / f.R, fig2[0].ff_force / fig2[0].R), rel(f.ff_m12 / f.R, fig2[0].ff_m12 / fig2[0].R)});
+      const bool fig2_ok = fig2_w_diff <= fig2_w_tol && fig2_f_diff <= fig2_f_tol && fig2_linearity <= kLinearity;
+      all_ok = all_ok && fig2_ok;
     }
 
     // ---- the files ---------------------------------------------------------------------------
@@ -366,7 +375,7 @@ int main(int argc, char** argv) {
     md << "<!-- Written by build/crosscheck_penalty (make crosscheck); do not edit. -->\n\n";
     if (wanted("table")) {
       md << "### The table\n\n| OS | paper | GLT | ours, nodes | ours, Gauss |";
-      for (int n : s.table_levels) md << " FreeFEM, " << 4 * n << " cells |";
+      for (int n : s.table_levels) md << " FreeFEM, " << 4 * n << " cells per quarter circle |";
       md << "\n|---:|---:|---:|---:|---:|";
       for (size_t k = 0; k < s.table_levels.size(); ++k) md << "---:|";
       md << "\n";
@@ -375,43 +384,45 @@ int main(int argc, char** argv) {
            << t.ours_nodes << " | " << t.ours_gauss << " |";
         for (int c : t.freefem) md << " " << (c < 0 ? std::string("not converged") : std::to_string(c)) << " |";
         md << "\n";
-    }
-    md << "\n| discretisation | h | lambda_1h | (5a) with no contact, eps = " << fmt("%g", kEigenEps)
-       << ": measured factor | 1/(1 + eps lambda_1h) |\n|---|---:|---:|---:|---:|\n";
-    md << "| ours, nodes | 1/4 | " << fmt("%.4f", our_lambda("nodes")) << " | (results/contraction.md) | |\n";
-    md << "| ours, Gauss | 1/4 | " << fmt("%.4f", our_lambda("gauss")) << " | (results/contraction.md) | |\n";
-    for (const EigenCheck& e : eigen)
-      md << "| FreeFEM, " << 4 * e.level << " cells | " << fmt("%.3f", e.h) << " | " << fmt("%.4f", e.lambda1h) << " | "
-         << fmt("%.7f", e.measured) << " | " << fmt("%.7f", e.q) << (e.ok ? "" : " (differs)") << " |\n";
-    md << "| continuum (Bjorstad and Tjostheim 1999) | 0 | " << fmt("%.4f", lambda1) << " | | |\n\n";
-    md << "The counts are shown, not judged: no two discretisations share lambda_1h, and the counts follow it. What is "
-          "judged is the rate itself: with no contact, (5a)'s slowest mode must contract by 1/(1 + eps lambda_1h) "
-          "with FreeFEM's own lambda_1h, to " << fmt("%g", kEigenTol) << ".\n\n";
-
+      }
+      md << "\n| discretisation | h | lambda_1h | (5a) with no contact, eps = " << fmt("%g", kEigenEps)
+         << ": measured factor | 1/(1 + eps lambda_1h) |\n|---|---:|---:|---:|---:|\n";
+      md << "| ours, nodes | 1/4 | " << fmt("%.4f", our_lambda("nodes")) << " | (results/contraction.md) | |\n";
+      md << "| ours, Gauss | 1/4 | " << fmt("%.4f", our_lambda("gauss")) << " | (results/contraction.md) | |\n";
+      for (const EigenCheck& e : eigen)
+        md << "| FreeFEM, " << 4 * e.level << " cells per quarter circle | " << fmt("%.3f", e.h) << " | " << fmt("%.4f", e.lambda1h) << " | "
+           << fmt("%.7f", e.measured) << " | " << fmt("%.7f", e.q) << (e.ok ? "" : " (differs)") << " |\n";
+      md << "| continuum (Bjorstad and Tjostheim 1999) | 0 | " << fmt("%.4f", lambda1) << " | | |\n\n";
+      md << "The counts are shown, not judged: no two discretisations share lambda_1h, and the counts follow it. What is "
+            "judged is the rate itself: with no contact, (5a)'s slowest mode must contract by 1/(1 + eps lambda_1h) "
+            "with FreeFEM's own lambda_1h, to " << fmt("%g", kEigenTol) << ".\n\n";
     }
     if (wanted("eps")) {
       md << "### Fixed eps\n\n| eps | quantity | FreeFEM | this code | difference | tolerance | verdict |\n"
             "|---:|---|---|---|---:|---:|---|\n";
       for (const EpsComparison& c : comparisons) {
-        md << "| " << fmt("%g", c.eps) << " | max w | " << verdict(c.ff_w) << " | " << verdict(c.our_w) << " | "
+        md << "| " << fmt("%g", c.eps) << " | max w | " << brief(c.ff_w) << " | " << brief(c.our_w) << " | "
            << fmt("%.1e", c.w.difference) << " | " << fmt("%.1e", c.w.tolerance) << " | " << (c.w.agree ? "agree" : "DIFFER") << " |\n";
-        md << "| " << fmt("%g", c.eps) << " | force | " << verdict(c.ff_f) << " | " << verdict(c.our_f) << " | "
+        md << "| " << fmt("%g", c.eps) << " | force | " << brief(c.ff_f) << " | " << brief(c.our_f) << " | "
            << fmt("%.1e", c.f.difference) << " | " << fmt("%.1e", c.f.tolerance) << " | " << (c.f.agree ? "agree" : "DIFFER") << " |\n";
-    }
-    md << "\nFreeFEM on " << 4 * s.eps_levels.front() << " to " << 4 * s.eps_levels.back()
-       << " cells per quarter circle with the penalty at its quadrature points, this code on h = 1/" << s.eps_ns.front()
-       << " to 1/" << s.eps_ns.back() << " with Gauss sampling: the penalty integrated over the disk, one continuum problem.\n";
-    md << "\n| eps | FreeFEM: max w - max w_eps | force - force_eps | this code: max w - max w_eps | force - force_eps |\n|---:|---:|---:|---:|---:|\n";
-    for (size_t k = 0; k < rate.size(); ++k)
-      md << "| " << fmt("%g", s.rate_eps[k]) << " | " << fmt_above(rate[k][0], rate_noise[0], 3) << " | "
-         << fmt_above(rate[k][1], rate_noise[1], 3) << " | " << fmt_above(rate[k][2], rate_noise[2], 3) << " | "
-         << fmt_above(rate[k][3], rate_noise[3], 3) << " |\n";
-    md << "\nThe penalised answer against the exact answer with the same discrete constraint: FreeFEM on "
-       << 4 * s.rate_level << " cells per quarter circle with the penalty at the vertices (contact_hct.edp's constraint), "
-          "this code on h = 1/" << s.rate_n << " with nodal sampling (its exact solver's constraint). Each decade of eps divides the difference by 10 "
-       << (rate_ok ? "(within 1, the last three decades): the rate eps." : "NOT within 1 over the last three decades.")
-       << "\n\n";
-
+      }
+      md << "\nFreeFEM on " << 4 * s.eps_levels.front() << " to " << 4 * s.eps_levels.back()
+         << " cells per quarter circle with the penalty at its quadrature points, this code on h = 1/" << s.eps_ns.front()
+         << " to 1/" << s.eps_ns.back() << " with Gauss sampling: the penalty integrated over the disk, one continuum "
+            "problem. Each cell is a Richardson limit and its bar where the observed order is steady (the order in "
+            "brackets), else the finest value and its last increment; the tolerance is the sum of the two bars.\n";
+      md << "\n| eps | FreeFEM: max w - max w_eps | force - force_eps | this code: max w - max w_eps | force - force_eps |\n"
+            "|---:|---:|---:|---:|---:|\n";
+      for (size_t k = 0; k < rate.size(); ++k)
+        md << "| " << fmt("%g", s.rate_eps[k]) << " | " << fmt_above(rate[k][0], rate_noise[0], 3) << " | "
+           << fmt_above(rate[k][1], rate_noise[1], 3) << " | " << fmt_above(rate[k][2], rate_noise[2], 3) << " | "
+           << fmt_above(rate[k][3], rate_noise[3], 3) << " |\n";
+      md << "\nThe penalised answer against the exact answer with the same discrete constraint: FreeFEM on "
+         << 4 * s.rate_level << " cells per quarter circle with the penalty at the vertices (contact_hct.edp's constraint), "
+            "this code on h = 1/" << s.rate_n << " with nodal sampling (its exact solver's constraint). Each decade of eps "
+            "divides the difference by 10 "
+         << (rate_ok ? "(within 1, the last three decades): the rate eps." : "NOT within 1 over the last three decades.")
+         << "\n\n";
     }
     if (wanted("fig2")) {
       md << "### Fig. 2\n\nFreeFEM on the mesh with " << 4 * s.fig2_level << " cells per quarter circle, this code at h = 1/" << our_n
