@@ -140,7 +140,341 @@ constexpr double kLinearity = 1e-8;
 
 double rel(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
 
+
+// ---- our side at fixed eps ---------------------------------------------------------------------
+// The exact discrete w_eps of the paper's scene on h = 1/n for eps = 0.1, 0.01, ... down to eps.
+std::pair<Problem, std::vector<VectorXd>> our_path(const PaperScene& sc, int n, SamplingKind kind, double eps) {
+  Problem p = make_problem(make_grid(n), kind, sc.obstacle(), [](double, double) { return 0.0; });
+  std::vector<VectorXd> path = penalised_path(p, eps);
+  return {std::move(p), std::move(path)};
+}
+const VectorXd& at_eps(const std::vector<VectorXd>& path, double eps) {
+  return path.at(static_cast<size_t>(std::lround(-std::log10(eps / 0.1))));  // path[k]: eps = 0.1 * 10^-k
+}
+double nodal_max(const PaperScene& sc, const Problem& p, const VectorXd& w, double eps) {
+  const NodalFields f = nodal_fields(p, w, sc.obstacle(), eps, kPoissonRatio);
+  return *std::max_element(f.w.begin(), f.w.end());
+}
+
+// ---- 1. the table: (5a)'s counts, and lambda_1h measured as (5a)'s contraction with no contact ---
+struct TablePart {
+  std::vector<TableRow> table;
+  std::vector<EigenCheck> eigen;
+  bool ok = true;
+};
+TablePart run_table(const Setup& s, const std::vector<PublishedRow>& paper, const CsvTable& ours_table) {
+  TablePart part;
+  auto& table = part.table;
+  auto& eigen = part.eigen;
+  bool& all_ok = part.ok;
+  std::cerr << "crosscheck_penalty: the table (FreeFEM's linear scheme, " << paper.size() << " tolerances)\n";
+  for (const PublishedRow& p : paper) {
+    TableRow row{p, ours_iterations(ours_table, "nodes", p.tolerance), ours_iterations(ours_table, "gauss", p.tolerance), {}};
+    for (int n : s.table_levels) {
+      const PenaltyRun r = penalty(s, n, "-scheme linear -sampling vertices -tol " + fmt("%.17g", p.tolerance), s.scene.height);
+      row.freefem.push_back(r.converged ? r.iterations : -1);
+      if (!r.converged) all_ok = false;
+    }
+    table.push_back(row);
+  }
+  for (int n : s.table_levels) {
+    PaperScene below = s.scene;
+    below.height = -1;  // far under the plate: no contact
+    const std::string out = s.work + "/eigen" + std::to_string(n) + ".json";
+    const PenaltyRun r = penalty_values(run_freefem(
+        s.penalty, mesh(s, n),
+        scene_args(below, points(s)) + " -load 1 -continuation 0 -eigen 1 -tol " + fmt("%g", kEigenStop) + eps_arg(kEigenEps), out));
+    EigenCheck e{n, r.h, r.lambda1h, 1 / (1 + kEigenEps * r.lambda1h), r.levels.at(0).last_ratio, false};
+    e.ok = r.converged && std::abs(e.measured - e.q) <= kEigenTol;
+    all_ok = all_ok && e.ok;
+    eigen.push_back(e);
+  }
+  return part;
+}
+
+// ---- 2. fixed eps: both codes' sequences and their limits ----------------------------------------
+struct EpsPart {
+  std::vector<EpsRun> eps_runs;
+  std::vector<EpsComparison> comparisons;
+  std::vector<std::array<double, 4>> rate;  // per eps: FreeFEM dw, df; ours dw, df
+  std::array<double, 4> rate_noise{};       // round-off in each column
+  bool rate_ok = true, ok = true;
+};
+void run_fixed_eps(const Setup& s, EpsPart& part) {
+  auto& eps_runs = part.eps_runs;
+  auto& comparisons = part.comparisons;
+  bool& all_ok = part.ok;
+  std::cerr << "crosscheck_penalty: fixed eps (" << s.eps_values.size() << " values, FreeFEM and this code)\n";
+  const PaperScene& sc = s.scene;
+  // Each grid's path of exact w_eps, eps = 0.1, 0.01, ... down to the smallest eps here, once.
+  std::vector<std::pair<Problem, std::vector<VectorXd>>> paths;
+  for (int n : s.eps_ns) paths.push_back(our_path(sc, n, SamplingKind::Gauss, s.eps_values.back()));
+  for (double eps : s.eps_values) {
+    std::vector<double> fw, ff, fwn, ffn, ow, of, own, ofn;
+    for (int n : s.eps_levels) {
+      const PenaltyRun r = penalty(s, n, "-scheme nonlinear -sampling quadrature -continuation 0 -tol 1e-13" + eps_arg(eps), sc.height);
+      if (!r.converged) throw std::runtime_error("penalty_hct.edp did not converge at eps = " + fmt("%g", eps) + ": " + r.why);
+      eps_runs.push_back({kFreefemCode, 4 * n, r.h, r.max_w, r.force});
+      fw.push_back(r.max_w), ff.push_back(r.force);
+      fwn.push_back(freefem_roundoff(r.h, r.max_w)), ffn.push_back(freefem_roundoff(r.h, r.force));
+    }
+    for (size_t j = 0; j < s.eps_ns.size(); ++j) {
+      const int n = s.eps_ns[j];
+      const Problem& p = paths[j].first;
+      const VectorXd& w = at_eps(paths[j].second, eps);
+      const double mw = nodal_max(sc, p, w, eps);
+      const double force = total_contact_force(p, contact_force_density(p, w, eps));
+      eps_runs.push_back({"bfs-gauss", n, 1.0 / n, mw, force});
+      ow.push_back(mw), of.push_back(force);
+      own.push_back(exact_solve_roundoff(n, mw)), ofn.push_back(exact_solve_roundoff(n, force));
+    }
+    EpsComparison c{eps, extrapolate(fw, fwn), extrapolate(ff, ffn), extrapolate(ow, own), extrapolate(of, ofn), {}, {}};
+    c.w = compare_limits(c.ff_w, c.our_w);
+    c.f = compare_limits(c.ff_f, c.our_f);
+    all_ok = all_ok && c.w.agree && c.f.agree;
+    comparisons.push_back(c);
+  }
+}
+
+// ---- 2'. the rate w_eps -> w against each code's exact answer with the same discrete constraint ---
+void run_rate(const Setup& s, EpsPart& part) {
+  auto& rate = part.rate;
+  auto& rate_noise = part.rate_noise;
+  bool& rate_ok = part.rate_ok;
+  const PaperScene& sc = s.scene;
+
+  std::cerr << "crosscheck_penalty: the rate w_eps -> w (eps down to " << s.rate_eps.back() << ")\n";
+  const nlohmann::json ff_exact = run_freefem(s.exact, mesh(s, s.rate_level), scene_args(sc, points(s)), s.work + "/exact.json");
+  if (!ff_exact.at("converged").get<bool>()) throw std::runtime_error("contact_hct.edp did not settle");
+  const double ff_w0 = ff_exact.at("max_w").get<double>(), ff_f0 = ff_exact.at("total_contact_force").get<double>();
+  const double ff_h = ff_exact.at("hmax").get<double>();
+  rate_noise = {2 * freefem_roundoff(ff_h, ff_w0), 2 * freefem_roundoff(ff_h, ff_f0), 0, 0};
+  const CheckValues our_exact = solve_ours(s.rate_n, SamplingSpec{SamplingKind::Nodes}, sc.obstacle(), sc.rim());
+  rate_noise[2] = 2 * exact_solve_roundoff(s.rate_n, our_exact.max_w);
+  rate_noise[3] = 2 * exact_solve_roundoff(s.rate_n, our_exact.force);
+  const auto [p, path] = our_path(sc, s.rate_n, SamplingKind::Nodes, s.rate_eps.back());
+  for (double eps : s.rate_eps) {
+    const PenaltyRun r = penalty(s, s.rate_level, "-scheme nonlinear -sampling vertices -continuation 0 -tol 1e-14" + eps_arg(eps), sc.height);
+    if (!r.converged) throw std::runtime_error("penalty_hct.edp did not converge at eps = " + fmt("%g", eps) + ": " + r.why);
+    const VectorXd& w = at_eps(path, eps);
+    rate.push_back({ff_w0 - r.max_w, ff_f0 - r.force, our_exact.max_w - nodal_max(sc, p, w, eps),
+                    our_exact.force - total_contact_force(p, contact_force_density(p, w, eps))});
+  }
+  // w_eps -> w at the rate eps: each decade divides the difference by 10 once the contact set of
+  // w_eps is that of w (the last three decades here).
+  for (size_t k = rate.size() - 3; k + 1 < rate.size(); ++k)
+    for (int q = 0; q < 4; ++q) rate_ok = rate_ok && std::abs(rate[k][q] / rate[k + 1][q] - 10) <= 1;
+  part.ok = part.ok && rate_ok;
+}
+
+// ---- 3. Fig. 2 from FreeFEM at each R of results/fig2.csv, beside ours on its finest grid -------
+struct Fig2Part {
+  std::vector<Fig2Row> fig2;
+  int our_n = 0, mesh_n = 0;
+  double fig2_w_diff = 0, fig2_f_diff = 0, fig2_w_tol = 0, fig2_f_tol = 0, fig2_linearity = 0;
+  bool ok = true;
+};
+Fig2Part run_fig2(const Setup& s, const CsvTable& ours_fig2) {
+  Fig2Part part;
+  auto& fig2 = part.fig2;
+  int &our_n = part.our_n, &mesh_n = part.mesh_n;
+  double &fig2_w_diff = part.fig2_w_diff, &fig2_f_diff = part.fig2_f_diff, &fig2_w_tol = part.fig2_w_tol,
+         &fig2_f_tol = part.fig2_f_tol, &fig2_linearity = part.fig2_linearity;
+
+  std::cerr << "crosscheck_penalty: Fig. 2 (FreeFEM at eps = " << s.fig2_eps << ")\n";
+  for (size_t r : ours_fig2.where("sampling", "nodes")) our_n = std::max(our_n, static_cast<int>(ours_fig2.number(r, "n")));
+  std::optional<PenaltyRun> ff_fine;  // at the paper's R
+  for (size_t r : ours_fig2.where("sampling", "nodes")) {
+    if (static_cast<int>(ours_fig2.number(r, "n")) != our_n) continue;
+    const double R = ours_fig2.number(r, "R");
+    const PenaltyRun f = penalty(s, s.fig2_level, "-scheme nonlinear -continuation 0 -tol 1e-13" + eps_arg(s.fig2_eps), R);
+    if (!f.converged) throw std::runtime_error("penalty_hct.edp did not converge for Fig. 2 at R = " + fmt("%g", R) + ": " + f.why);
+    if (std::abs(R - s.scene.height) <= 1e-12 * s.scene.height) ff_fine = f;
+    fig2.push_back({R, f.max_w, f.max_m12, f.force, ours_fig2.number(r, "max_w"), ours_fig2.number(r, "max_m12"),
+                    ours_fig2.number(r, "force")});
+  }
+  // Judged where the quantity converges (max w, the force), at the paper's R on each code's finest
+  // grid: the two differ by at most the sum of their last mesh increments (FreeFEM: its mesh and the
+  // one below; ours: the finest two nodal rows of fig2_mesh.csv), the bar of a sequence whose order
+  // is not steady. max |m12| at the rim and the nodal maximum of xi depend on the grid by nature:
+  // shown, not judged.
+  const CsvTable ours_mesh = read_csv_table(s.results + "/fig2_mesh.csv");
+  for (size_t r : ours_mesh.where("sampling", "nodes")) mesh_n = std::max(mesh_n, static_cast<int>(ours_mesh.number(r, "n")));
+  double our_w_prev = NAN, our_f_prev = NAN, our_w_fine = NAN, our_f_fine = NAN;
+  for (size_t r : ours_mesh.where("sampling", "nodes")) {
+    const int n = static_cast<int>(ours_mesh.number(r, "n"));
+    if (n == mesh_n / 2) our_w_prev = ours_mesh.number(r, "max_w"), our_f_prev = ours_mesh.number(r, "force");
+    if (n == mesh_n) our_w_fine = ours_mesh.number(r, "max_w"), our_f_fine = ours_mesh.number(r, "force");
+  }
+  if (std::isnan(our_w_prev) || std::isnan(our_w_fine))
+    throw std::runtime_error(ours_mesh.path + " lacks the nodal rows n = " + std::to_string(mesh_n / 2) + " and " + std::to_string(mesh_n));
+  const PenaltyRun ff_coarse = penalty(s, s.fig2_level / 2, "-scheme nonlinear -continuation 0 -tol 1e-13" + eps_arg(s.fig2_eps), s.scene.height);
+  if (!ff_fine) throw std::runtime_error(ours_fig2.path + " has no row at the paper's R = " + fmt("%g", s.scene.height));
+  if (!ff_coarse.converged) throw std::runtime_error("penalty_hct.edp did not converge at the paper's R: " + ff_coarse.why);
+  fig2_w_diff = rel(ff_fine->max_w, our_w_fine), fig2_f_diff = rel(ff_fine->force, our_f_fine);
+  fig2_w_tol = rel(ff_fine->max_w, ff_coarse.max_w) + rel(our_w_fine, our_w_prev);
+  fig2_f_tol = rel(ff_fine->force, ff_coarse.force) + rel(our_f_fine, our_f_prev);
+  // And FreeFEM's quantities are linear in R, as the paper's Fig. 2 shows and (2) implies for f = 0.
+  for (const Fig2Row& f : fig2)
+    fig2_linearity = std::max({fig2_linearity, rel(f.ff_w / f.R, fig2[0].ff_w / fig2[0].R),
+                               rel(f.ff_force / f.R, fig2[0].ff_force / fig2[0].R), rel(f.ff_m12 / f.R, fig2[0].ff_m12 / fig2[0].R)});
+  const bool fig2_ok = fig2_w_diff <= fig2_w_tol && fig2_f_diff <= fig2_f_tol && fig2_linearity <= kLinearity;
+  part.ok = fig2_ok;
+  return part;
+}
+
+// ---- the files ----------------------------------------------------------------------------------
+std::string table_csv(const Setup& s, const TablePart& part) {
+  const auto& table = part.table;
+  std::ostringstream tcsv;
+  tcsv << "# Written by build/crosscheck_penalty (make crosscheck). Iterations of the linear scheme (5a) over the\n"
+          "# whole continuation eps_s = 0.1 * 10^-s with both stopping rules at OS, the paper's obstacle, w = 0 to start.\n"
+          "# paper, glt: published (h = 1/4); ours_nodes, ours_gauss: results/table.csv (h = 1/4); freefem_n<k>: \n"
+          "# reference/penalty_hct.edp, vertex sampling, on the gmsh mesh with 4k cells per quarter circle (-1: not converged).\n";
+  tcsv << "tolerance,paper,glt,ours_nodes,ours_gauss";
+  for (int n : s.table_levels) tcsv << ",freefem_n" << n;
+  tcsv << "\n";
+  for (const TableRow& t : table) {
+    tcsv << fmt("%g", t.paper.tolerance) << "," << t.paper.iterations << "," << t.paper.iterations_glt << ","
+         << t.ours_nodes << "," << t.ours_gauss;
+    for (int c : t.freefem) tcsv << "," << c;
+    tcsv << "\n";
+  }
+  return tcsv.str();
+}
+
+std::string eps_csv(const Setup& s, const EpsPart& part) {
+  const auto& eps_runs = part.eps_runs;
+  const auto& comparisons = part.comparisons;
+  std::ostringstream ecsv;
+  ecsv << "# Written by build/crosscheck_penalty (make crosscheck). The exact discrete penalised solution w_eps at\n"
+          "# fixed eps (the paper's obstacle, f = 0), the penalty integrated over the disk: FreeFEM (penalty_hct.edp,\n"
+          "# (3a), quadrature sampling; cells per quarter circle) and this code (bfs-gauss; n squares per side).\n"
+          "# max_w at the vertices or nodes; force = the penalty force eps^-1 (phi - w)^+ integrated.\n";
+  ecsv << "eps,code,cells,h,max_w,force\n";
+  for (size_t k = 0, i = 0; k < comparisons.size(); ++k)
+    for (size_t j = 0; j < s.eps_levels.size() + s.eps_ns.size(); ++j, ++i) {
+      const EpsRun& r = eps_runs[i];
+      // to the digits each code's round-off leaves (freefem_roundoff, exact_solve_roundoff)
+      auto noise = [&](double v) { return r.code == kFreefemCode ? freefem_roundoff(r.h, v) : exact_solve_roundoff(r.cells, v); };
+      ecsv << fmt("%g", comparisons[k].eps) << "," << r.code << "," << r.cells << "," << fmt("%.6g", r.h) << ","
+           << fmt_above(r.max_w, noise(r.max_w), 10, 'g') << "," << fmt_above(r.force, noise(r.force), 10, 'g') << "\n";
+    }
+  return ecsv.str();
+}
+
+std::string fig2_csv(const Setup& s, const Fig2Part& part) {
+  const auto& fig2 = part.fig2;
+  const int our_n = part.our_n;
+  std::ostringstream fcsv;
+  fcsv << "# Written by build/crosscheck_penalty (make crosscheck). Fig. 2's quantities against R at eps = "
+       << fmt("%g", s.fig2_eps) << ", (3a), nu = 0.3:\n# FreeFEM on the mesh with " << 4 * s.fig2_level
+       << " cells per quarter circle (max over vertices; m12 the largest over the triangles at a vertex) and ours from\n"
+          "# results/fig2.csv at h = 1/" << our_n << " (nodal sampling; m12 averaged over the elements at a node).\n";
+  fcsv << "R,freefem_max_w,freefem_max_m12,freefem_force,ours_max_w,ours_max_m12,ours_force\n";
+  for (const Fig2Row& f : fig2)
+    fcsv << fmt("%g", f.R) << "," << fmt("%.7e", f.ff_w) << "," << fmt("%.7e", f.ff_m12) << "," << fmt("%.7e", f.ff_force)
+         << "," << fmt("%.7e", f.our_w) << "," << fmt("%.7e", f.our_m12) << "," << fmt("%.7e", f.our_force) << "\n";
+
+  return fcsv.str();
+}
+
+std::string table_md(const Setup& s, const TablePart& part, const CsvTable& ours_contraction, double lambda1) {
+  const auto& table = part.table;
+  const auto& eigen = part.eigen;
+  auto our_lambda = [&](const std::string& sampling) {
+    for (size_t r : ours_contraction.where("sampling", sampling))
+      if (ours_contraction.text(r, "n") == "4") return ours_contraction.number(r, "lambda_1h");
+    throw std::runtime_error(ours_contraction.path + " has no h = 1/4 row for " + sampling);
+  };
+  std::ostringstream md;
+  md << "### The table\n\n| OS | paper | GLT | ours, nodes | ours, Gauss |";
+  for (int n : s.table_levels) md << " FreeFEM, " << 4 * n << " cells per quarter circle |";
+  md << "\n|---:|---:|---:|---:|---:|";
+  for (size_t k = 0; k < s.table_levels.size(); ++k) md << "---:|";
+  md << "\n";
+  for (const TableRow& t : table) {
+    md << "| " << fmt("%g", t.paper.tolerance) << " | " << t.paper.iterations << " | " << t.paper.iterations_glt << " | "
+       << t.ours_nodes << " | " << t.ours_gauss << " |";
+    for (int c : t.freefem) md << " " << (c < 0 ? std::string("not converged") : std::to_string(c)) << " |";
+    md << "\n";
+  }
+  md << "\n| discretisation | h | lambda_1h | (5a) with no contact, eps = " << fmt("%g", kEigenEps)
+     << ": measured factor | 1/(1 + eps lambda_1h) |\n|---|---:|---:|---:|---:|\n";
+  md << "| ours, nodes | 1/4 | " << fmt("%.4f", our_lambda("nodes")) << " | (results/contraction.md) | |\n";
+  md << "| ours, Gauss | 1/4 | " << fmt("%.4f", our_lambda("gauss")) << " | (results/contraction.md) | |\n";
+  for (const EigenCheck& e : eigen)
+    md << "| FreeFEM, " << 4 * e.level << " cells per quarter circle | " << fmt("%.3f", e.h) << " | " << fmt("%.4f", e.lambda1h) << " | "
+       << fmt("%.7f", e.measured) << " | " << fmt("%.7f", e.q) << (e.ok ? "" : " (differs)") << " |\n";
+  md << "| continuum (Bjorstad and Tjostheim 1999) | 0 | " << fmt("%.4f", lambda1) << " | | |\n\n";
+  md << "The counts are shown, not judged: no two discretisations share lambda_1h, and the counts follow it. What is "
+        "judged is the rate itself: with no contact, (5a)'s slowest mode must contract by 1/(1 + eps lambda_1h) "
+        "with FreeFEM's own lambda_1h, to " << fmt("%g", kEigenTol) << ".\n\n";
+  return md.str();
+}
+
+std::string eps_md(const Setup& s, const EpsPart& part) {
+  const auto& comparisons = part.comparisons;
+  const auto& rate = part.rate;
+  const auto& rate_noise = part.rate_noise;
+  const bool rate_ok = part.rate_ok;
+  std::ostringstream md;
+  md << "### Fixed eps\n\n| eps | quantity | FreeFEM | this code | difference | tolerance | verdict |\n"
+        "|---:|---|---|---|---:|---:|---|\n";
+  for (const EpsComparison& c : comparisons) {
+    md << "| " << fmt("%g", c.eps) << " | max w | " << brief(c.ff_w) << " | " << brief(c.our_w) << " | "
+       << fmt("%.1e", c.w.difference) << " | " << fmt("%.1e", c.w.tolerance) << " | " << (c.w.agree ? "agree" : "DIFFER") << " |\n";
+    md << "| " << fmt("%g", c.eps) << " | force | " << brief(c.ff_f) << " | " << brief(c.our_f) << " | "
+       << fmt("%.1e", c.f.difference) << " | " << fmt("%.1e", c.f.tolerance) << " | " << (c.f.agree ? "agree" : "DIFFER") << " |\n";
+  }
+  md << "\nFreeFEM on " << 4 * s.eps_levels.front() << " to " << 4 * s.eps_levels.back()
+     << " cells per quarter circle with the penalty at its quadrature points, this code on h = 1/" << s.eps_ns.front()
+     << " to 1/" << s.eps_ns.back() << " with Gauss sampling: the penalty integrated over the disk, one continuum "
+        "problem. Each cell is a Richardson limit and its bar where the observed order is steady (the order in "
+        "brackets), else the finest value and its last increment; the tolerance is the sum of the two bars.\n";
+  md << "\n| eps | FreeFEM: max w - max w_eps | force - force_eps | this code: max w - max w_eps | force - force_eps |\n"
+        "|---:|---:|---:|---:|---:|\n";
+  for (size_t k = 0; k < rate.size(); ++k)
+    md << "| " << fmt("%g", s.rate_eps[k]) << " | " << fmt_above(rate[k][0], rate_noise[0], 3) << " | "
+       << fmt_above(rate[k][1], rate_noise[1], 3) << " | " << fmt_above(rate[k][2], rate_noise[2], 3) << " | "
+       << fmt_above(rate[k][3], rate_noise[3], 3) << " |\n";
+  md << "\nThe penalised answer against the exact answer with the same discrete constraint: FreeFEM on "
+     << 4 * s.rate_level << " cells per quarter circle with the penalty at the vertices (contact_hct.edp's constraint), "
+        "this code on h = 1/" << s.rate_n << " with nodal sampling (its exact solver's constraint). Each decade of eps "
+        "divides the difference by 10 "
+     << (rate_ok ? "(within 1, the last three decades): the rate eps." : "NOT within 1 over the last three decades.")
+     << "\n\n";
+  return md.str();
+}
+
+std::string fig2_md(const Setup& s, const Fig2Part& part) {
+  const auto& fig2 = part.fig2;
+  const int our_n = part.our_n, mesh_n = part.mesh_n;
+  const double fig2_w_diff = part.fig2_w_diff, fig2_f_diff = part.fig2_f_diff, fig2_w_tol = part.fig2_w_tol,
+               fig2_f_tol = part.fig2_f_tol, fig2_linearity = part.fig2_linearity;
+  std::ostringstream md;
+  md << "### Fig. 2\n\nFreeFEM on the mesh with " << 4 * s.fig2_level << " cells per quarter circle, this code at h = 1/" << our_n
+     << " (nodal sampling, results/fig2.csv); eps = " << fmt("%g", s.fig2_eps) << ", scheme (3a), nu = 0.3.\n\n| R | max w: FreeFEM | ours | max abs m12: FreeFEM | ours | force: FreeFEM | ours |\n"
+        "|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const Fig2Row& f : fig2)
+    md << "| " << fmt("%g", f.R) << " | " << fmt("%.6f", f.ff_w) << " | " << fmt("%.6f", f.our_w) << " | "
+       << fmt("%.5f", f.ff_m12) << " | " << fmt("%.5f", f.our_m12) << " | " << fmt("%.4f", f.ff_force) << " | "
+       << fmt("%.4f", f.our_force) << " |\n";
+  md << "\nAt the paper's R = " << fmt("%g", s.scene.height) << ", FreeFEM as above against ours at h = 1/" << mesh_n
+     << " (results/fig2_mesh.csv): max w differs by " << fmt("%.2e", fig2_w_diff)
+     << " (relative), within the codes' last mesh increments summed, " << fmt("%.2e", fig2_w_tol)
+     << (fig2_w_diff <= fig2_w_tol ? "" : " : NOT within") << "; the force by " << fmt("%.2e", fig2_f_diff) << ", against "
+     << fmt("%.2e", fig2_f_tol) << (fig2_f_diff <= fig2_f_tol ? "" : " : NOT within")
+     << ". FreeFEM's three quantities divided by R " << (fig2_linearity <= kLinearity ? "agree" : "DO NOT agree")
+     << " over the " << fig2.size() << " heights to " << fmt("%g", kLinearity) << " (relative): linear in R. max |m12| is taken at the contact circle, where second derivatives jump across "
+        "element edges and each code takes its own value there (FreeFEM the largest over the triangles at a vertex, "
+        "ours the mean over the elements at a node): shown, not judged; the nodal maximum of the force density grows "
+        "as the grid is refined (the force concentrates on the circle) and is not compared.\n";
+  return md.str();
+}
+
 }  // namespace
+
 
 int main(int argc, char** argv) {
   CLI::App app{"The penalty cross-check: FreeFEM's penalty script (reference/penalty_hct.edp) against the "
@@ -181,274 +515,24 @@ int main(int argc, char** argv) {
     const CsvTable ours_contraction = read_csv_table(s.results + "/contraction.csv");
     const CsvTable ours_fig2 = read_csv_table(s.results + "/fig2.csv");
     const double lambda1 = plate_constant(s.reference, "lambda1");
-    bool all_ok = true;
 
-    // 1. (5a)'s counts, and lambda_1h of each discretisation measured as (5a)'s contraction with no contact.
-    std::vector<TableRow> table;
-    std::vector<EigenCheck> eigen;
-    if (wanted("table")) {
-      std::cerr << "crosscheck_penalty: the table (FreeFEM's linear scheme, " << paper.size() << " tolerances)\n";
-      for (const PublishedRow& p : paper) {
-        TableRow row{p, ours_iterations(ours_table, "nodes", p.tolerance), ours_iterations(ours_table, "gauss", p.tolerance), {}};
-        for (int n : s.table_levels) {
-          const PenaltyRun r = penalty(s, n, "-scheme linear -sampling vertices -tol " + fmt("%.17g", p.tolerance), s.scene.height);
-          row.freefem.push_back(r.converged ? r.iterations : -1);
-          if (!r.converged) all_ok = false;
-        }
-        table.push_back(row);
-      }
-      for (int n : s.table_levels) {
-        PaperScene below = s.scene;
-        below.height = -1;  // far under the plate: no contact
-        const std::string out = s.work + "/eigen" + std::to_string(n) + ".json";
-        const PenaltyRun r = penalty_values(run_freefem(
-            s.penalty, mesh(s, n),
-            scene_args(below, points(s)) + " -load 1 -continuation 0 -eigen 1 -tol " + fmt("%g", kEigenStop) + eps_arg(kEigenEps), out));
-        EigenCheck e{n, r.h, r.lambda1h, 1 / (1 + kEigenEps * r.lambda1h), r.levels.at(0).last_ratio, false};
-        e.ok = r.converged && std::abs(e.measured - e.q) <= kEigenTol;
-        all_ok = all_ok && e.ok;
-        eigen.push_back(e);
-      }
-    }
-    auto our_lambda = [&](const std::string& sampling) {
-      for (size_t r : ours_contraction.where("sampling", sampling))
-        if (ours_contraction.text(r, "n") == "4") return ours_contraction.number(r, "lambda_1h");
-      throw std::runtime_error(ours_contraction.path + " has no h = 1/4 row for " + sampling);
-    };
+    TablePart table;
+    EpsPart eps;
+    Fig2Part fig2;
+    if (wanted("table")) table = run_table(s, paper, ours_table);
+    if (wanted("eps")) run_fixed_eps(s, eps), run_rate(s, eps);
+    if (wanted("fig2")) fig2 = run_fig2(s, ours_fig2);
+    const bool all_ok = table.ok && eps.ok && fig2.ok;
 
-    // 2. Fixed eps: both codes' sequences and their limits; then each w_eps against its own exact answer.
-    std::vector<EpsRun> eps_runs;
-    std::vector<EpsComparison> comparisons;
-    std::vector<std::array<double, 4>> rate;  // per eps: FreeFEM dw, df; ours dw, df
-    std::array<double, 4> rate_noise{};       // round-off in each column
-    bool rate_ok = true;
-    if (wanted("eps")) {
-      std::cerr << "crosscheck_penalty: fixed eps (" << s.eps_values.size() << " values, FreeFEM and this code)\n";
-      const PaperScene& sc = s.scene;
-      auto our_run = [&](int n, SamplingKind kind, double eps) {
-        const Problem p = make_problem(make_grid(n), kind, sc.obstacle(), [](double, double) { return 0.0; });
-        std::vector<VectorXd> path = penalised_path(p, eps);
-        return std::make_pair(p, path);
-      };
-      auto nodal_max = [&](const Problem& p, const VectorXd& w, double eps) {
-        const NodalFields f = nodal_fields(p, w, sc.obstacle(), eps, kPoissonRatio);
-        return *std::max_element(f.w.begin(), f.w.end());
-      };
-      // Each grid's path of exact w_eps, eps = 0.1, 0.01, ... down to the smallest eps here, once.
-      std::vector<std::pair<Problem, std::vector<VectorXd>>> paths;
-      for (int n : s.eps_ns) paths.push_back(our_run(n, SamplingKind::Gauss, s.eps_values.back()));
-      auto at_eps = [](const std::vector<VectorXd>& path, double eps) -> const VectorXd& {
-        return path.at(static_cast<size_t>(std::lround(-std::log10(eps / 0.1))));  // path[k]: eps = 0.1 * 10^-k
-      };
-      for (double eps : s.eps_values) {
-        std::vector<double> fw, ff, fwn, ffn, ow, of, own, ofn;
-        for (int n : s.eps_levels) {
-          const PenaltyRun r = penalty(s, n, "-scheme nonlinear -sampling quadrature -continuation 0 -tol 1e-13" + eps_arg(eps), sc.height);
-          if (!r.converged) throw std::runtime_error("penalty_hct.edp did not converge at eps = " + fmt("%g", eps) + ": " + r.why);
-          eps_runs.push_back({kFreefemCode, 4 * n, r.h, r.max_w, r.force});
-          fw.push_back(r.max_w), ff.push_back(r.force);
-          fwn.push_back(freefem_roundoff(r.h, r.max_w)), ffn.push_back(freefem_roundoff(r.h, r.force));
-        }
-        for (size_t j = 0; j < s.eps_ns.size(); ++j) {
-          const int n = s.eps_ns[j];
-          const Problem& p = paths[j].first;
-          const VectorXd& w = at_eps(paths[j].second, eps);
-          const double mw = nodal_max(p, w, eps);
-          const double force = total_contact_force(p, contact_force_density(p, w, eps));
-          eps_runs.push_back({"bfs-gauss", n, 1.0 / n, mw, force});
-          ow.push_back(mw), of.push_back(force);
-          own.push_back(exact_solve_roundoff(n, mw)), ofn.push_back(exact_solve_roundoff(n, force));
-        }
-        EpsComparison c{eps, extrapolate(fw, fwn), extrapolate(ff, ffn), extrapolate(ow, own), extrapolate(of, ofn), {}, {}};
-        c.w = compare_limits(c.ff_w, c.our_w);
-        c.f = compare_limits(c.ff_f, c.our_f);
-        all_ok = all_ok && c.w.agree && c.f.agree;
-        comparisons.push_back(c);
-      }
-      std::cerr << "crosscheck_penalty: the rate w_eps -> w (eps down to " << s.rate_eps.back() << ")\n";
-      const nlohmann::json ff_exact = run_freefem(s.exact, mesh(s, s.rate_level), scene_args(sc, points(s)), s.work + "/exact.json");
-      if (!ff_exact.at("converged").get<bool>()) throw std::runtime_error("contact_hct.edp did not settle");
-      const double ff_w0 = ff_exact.at("max_w").get<double>(), ff_f0 = ff_exact.at("total_contact_force").get<double>();
-      const double ff_h = ff_exact.at("hmax").get<double>();
-      rate_noise = {2 * freefem_roundoff(ff_h, ff_w0), 2 * freefem_roundoff(ff_h, ff_f0), 0, 0};
-      const CheckValues our_exact = solve_ours(s.rate_n, SamplingSpec{SamplingKind::Nodes}, sc.obstacle(), sc.rim());
-      rate_noise[2] = 2 * exact_solve_roundoff(s.rate_n, our_exact.max_w);
-      rate_noise[3] = 2 * exact_solve_roundoff(s.rate_n, our_exact.force);
-      const auto [p, path] = our_run(s.rate_n, SamplingKind::Nodes, s.rate_eps.back());
-      for (double eps : s.rate_eps) {
-        const PenaltyRun r = penalty(s, s.rate_level, "-scheme nonlinear -sampling vertices -continuation 0 -tol 1e-14" + eps_arg(eps), sc.height);
-        if (!r.converged) throw std::runtime_error("penalty_hct.edp did not converge at eps = " + fmt("%g", eps) + ": " + r.why);
-        const VectorXd& w = at_eps(path, eps);
-        rate.push_back({ff_w0 - r.max_w, ff_f0 - r.force, our_exact.max_w - nodal_max(p, w, eps),
-                        our_exact.force - total_contact_force(p, contact_force_density(p, w, eps))});
-      }
-      // w_eps -> w at the rate eps: each decade divides the difference by 10 once the contact set of
-      // w_eps is that of w (the last three decades here).
-      for (size_t k = rate.size() - 3; k + 1 < rate.size(); ++k)
-        for (int q = 0; q < 4; ++q) rate_ok = rate_ok && std::abs(rate[k][q] / rate[k + 1][q] - 10) <= 1;
-      all_ok = all_ok && rate_ok;
-    }
-
-    // 3. Fig. 2 from FreeFEM at each R of results/fig2.csv, beside ours on its finest grid.
-    std::vector<Fig2Row> fig2;
-    int our_n = 0, mesh_n = 0;
-    double fig2_w_diff = 0, fig2_f_diff = 0, fig2_w_tol = 0, fig2_f_tol = 0, fig2_linearity = 0;
-    if (wanted("fig2")) {
-      std::cerr << "crosscheck_penalty: Fig. 2 (FreeFEM at eps = " << s.fig2_eps << ")\n";
-      for (size_t r : ours_fig2.where("sampling", "nodes")) our_n = std::max(our_n, static_cast<int>(ours_fig2.number(r, "n")));
-      std::optional<PenaltyRun> ff_fine;  // at the paper's R
-      for (size_t r : ours_fig2.where("sampling", "nodes")) {
-        if (static_cast<int>(ours_fig2.number(r, "n")) != our_n) continue;
-        const double R = ours_fig2.number(r, "R");
-        const PenaltyRun f = penalty(s, s.fig2_level, "-scheme nonlinear -continuation 0 -tol 1e-13" + eps_arg(s.fig2_eps), R);
-        if (!f.converged) throw std::runtime_error("penalty_hct.edp did not converge for Fig. 2 at R = " + fmt("%g", R) + ": " + f.why);
-        if (std::abs(R - s.scene.height) <= 1e-12 * s.scene.height) ff_fine = f;
-        fig2.push_back({R, f.max_w, f.max_m12, f.force, ours_fig2.number(r, "max_w"), ours_fig2.number(r, "max_m12"),
-                        ours_fig2.number(r, "force")});
-      }
-      // Judged where the quantity converges (max w, the force), at the paper's R on each code's finest
-      // grid: the two differ by at most the sum of their last mesh increments (FreeFEM: its mesh and the
-      // one below; ours: the finest two nodal rows of fig2_mesh.csv), the bar of a sequence whose order
-      // is not steady. max |m12| at the rim and the nodal maximum of xi depend on the grid by nature:
-      // shown, not judged.
-      const CsvTable ours_mesh = read_csv_table(s.results + "/fig2_mesh.csv");
-      for (size_t r : ours_mesh.where("sampling", "nodes")) mesh_n = std::max(mesh_n, static_cast<int>(ours_mesh.number(r, "n")));
-      double our_w_prev = NAN, our_f_prev = NAN, our_w_fine = NAN, our_f_fine = NAN;
-      for (size_t r : ours_mesh.where("sampling", "nodes")) {
-        const int n = static_cast<int>(ours_mesh.number(r, "n"));
-        if (n == mesh_n / 2) our_w_prev = ours_mesh.number(r, "max_w"), our_f_prev = ours_mesh.number(r, "force");
-        if (n == mesh_n) our_w_fine = ours_mesh.number(r, "max_w"), our_f_fine = ours_mesh.number(r, "force");
-      }
-      if (std::isnan(our_w_prev) || std::isnan(our_w_fine))
-        throw std::runtime_error(ours_mesh.path + " lacks the nodal rows n = " + std::to_string(mesh_n / 2) + " and " + std::to_string(mesh_n));
-      const PenaltyRun ff_coarse = penalty(s, s.fig2_level / 2, "-scheme nonlinear -continuation 0 -tol 1e-13" + eps_arg(s.fig2_eps), s.scene.height);
-      if (!ff_fine) throw std::runtime_error(ours_fig2.path + " has no row at the paper's R = " + fmt("%g", s.scene.height));
-      if (!ff_coarse.converged) throw std::runtime_error("penalty_hct.edp did not converge at the paper's R: " + ff_coarse.why);
-      fig2_w_diff = rel(ff_fine->max_w, our_w_fine), fig2_f_diff = rel(ff_fine->force, our_f_fine);
-      fig2_w_tol = rel(ff_fine->max_w, ff_coarse.max_w) + rel(our_w_fine, our_w_prev);
-      fig2_f_tol = rel(ff_fine->force, ff_coarse.force) + rel(our_f_fine, our_f_prev);
-      // And FreeFEM's quantities are linear in R, as the paper's Fig. 2 shows and (2) implies for f = 0.
-      for (const Fig2Row& f : fig2)
-        fig2_linearity = std::max({fig2_linearity, rel(f.ff_w / f.R, fig2[0].ff_w / fig2[0].R),
-                                   rel(f.ff_force / f.R, fig2[0].ff_force / fig2[0].R), rel(f.ff_m12 / f.R, fig2[0].ff_m12 / fig2[0].R)});
-      const bool fig2_ok = fig2_w_diff <= fig2_w_tol && fig2_f_diff <= fig2_f_tol && fig2_linearity <= kLinearity;
-      all_ok = all_ok && fig2_ok;
-    }
-
-    // ---- the files ---------------------------------------------------------------------------
-    std::ostringstream tcsv, ecsv, fcsv, md;
-    tcsv << "# Written by build/crosscheck_penalty (make crosscheck). Iterations of the linear scheme (5a) over the\n"
-            "# whole continuation eps_s = 0.1 * 10^-s with both stopping rules at OS, the paper's obstacle, w = 0 to start.\n"
-            "# paper, glt: published (h = 1/4); ours_nodes, ours_gauss: results/table.csv (h = 1/4); freefem_n<k>: \n"
-            "# reference/penalty_hct.edp, vertex sampling, on the gmsh mesh with 4k cells per quarter circle (-1: not converged).\n";
-    tcsv << "tolerance,paper,glt,ours_nodes,ours_gauss";
-    for (int n : s.table_levels) tcsv << ",freefem_n" << n;
-    tcsv << "\n";
-    for (const TableRow& t : table) {
-      tcsv << fmt("%g", t.paper.tolerance) << "," << t.paper.iterations << "," << t.paper.iterations_glt << ","
-           << t.ours_nodes << "," << t.ours_gauss;
-      for (int c : t.freefem) tcsv << "," << c;
-      tcsv << "\n";
-    }
-    ecsv << "# Written by build/crosscheck_penalty (make crosscheck). The exact discrete penalised solution w_eps at\n"
-            "# fixed eps (the paper's obstacle, f = 0), the penalty integrated over the disk: FreeFEM (penalty_hct.edp,\n"
-            "# (3a), quadrature sampling; cells per quarter circle) and this code (bfs-gauss; n squares per side).\n"
-            "# max_w at the vertices or nodes; force = the penalty force eps^-1 (phi - w)^+ integrated.\n";
-    ecsv << "eps,code,cells,h,max_w,force\n";
-    for (size_t k = 0, i = 0; k < comparisons.size(); ++k)
-      for (size_t j = 0; j < s.eps_levels.size() + s.eps_ns.size(); ++j, ++i) {
-        const EpsRun& r = eps_runs[i];
-        // to the digits each code's round-off leaves (freefem_roundoff, exact_solve_roundoff)
-        auto noise = [&](double v) { return r.code == kFreefemCode ? freefem_roundoff(r.h, v) : exact_solve_roundoff(r.cells, v); };
-        ecsv << fmt("%g", comparisons[k].eps) << "," << r.code << "," << r.cells << "," << fmt("%.6g", r.h) << ","
-             << fmt_above(r.max_w, noise(r.max_w), 10, 'g') << "," << fmt_above(r.force, noise(r.force), 10, 'g') << "\n";
-      }
-    fcsv << "# Written by build/crosscheck_penalty (make crosscheck). Fig. 2's quantities against R at eps = "
-         << fmt("%g", s.fig2_eps) << ", (3a), nu = 0.3:\n# FreeFEM on the mesh with " << 4 * s.fig2_level
-         << " cells per quarter circle (max over vertices; m12 the largest over the triangles at a vertex) and ours from\n"
-            "# results/fig2.csv at h = 1/" << our_n << " (nodal sampling; m12 averaged over the elements at a node).\n";
-    fcsv << "R,freefem_max_w,freefem_max_m12,freefem_force,ours_max_w,ours_max_m12,ours_force\n";
-    for (const Fig2Row& f : fig2)
-      fcsv << fmt("%g", f.R) << "," << fmt("%.7e", f.ff_w) << "," << fmt("%.7e", f.ff_m12) << "," << fmt("%.7e", f.ff_force)
-           << "," << fmt("%.7e", f.our_w) << "," << fmt("%.7e", f.our_m12) << "," << fmt("%.7e", f.our_force) << "\n";
-
-    md << "<!-- Written by build/crosscheck_penalty (make crosscheck); do not edit. -->\n\n";
-    if (wanted("table")) {
-      md << "### The table\n\n| OS | paper | GLT | ours, nodes | ours, Gauss |";
-      for (int n : s.table_levels) md << " FreeFEM, " << 4 * n << " cells per quarter circle |";
-      md << "\n|---:|---:|---:|---:|---:|";
-      for (size_t k = 0; k < s.table_levels.size(); ++k) md << "---:|";
-      md << "\n";
-      for (const TableRow& t : table) {
-        md << "| " << fmt("%g", t.paper.tolerance) << " | " << t.paper.iterations << " | " << t.paper.iterations_glt << " | "
-           << t.ours_nodes << " | " << t.ours_gauss << " |";
-        for (int c : t.freefem) md << " " << (c < 0 ? std::string("not converged") : std::to_string(c)) << " |";
-        md << "\n";
-      }
-      md << "\n| discretisation | h | lambda_1h | (5a) with no contact, eps = " << fmt("%g", kEigenEps)
-         << ": measured factor | 1/(1 + eps lambda_1h) |\n|---|---:|---:|---:|---:|\n";
-      md << "| ours, nodes | 1/4 | " << fmt("%.4f", our_lambda("nodes")) << " | (results/contraction.md) | |\n";
-      md << "| ours, Gauss | 1/4 | " << fmt("%.4f", our_lambda("gauss")) << " | (results/contraction.md) | |\n";
-      for (const EigenCheck& e : eigen)
-        md << "| FreeFEM, " << 4 * e.level << " cells per quarter circle | " << fmt("%.3f", e.h) << " | " << fmt("%.4f", e.lambda1h) << " | "
-           << fmt("%.7f", e.measured) << " | " << fmt("%.7f", e.q) << (e.ok ? "" : " (differs)") << " |\n";
-      md << "| continuum (Bjorstad and Tjostheim 1999) | 0 | " << fmt("%.4f", lambda1) << " | | |\n\n";
-      md << "The counts are shown, not judged: no two discretisations share lambda_1h, and the counts follow it. What is "
-            "judged is the rate itself: with no contact, (5a)'s slowest mode must contract by 1/(1 + eps lambda_1h) "
-            "with FreeFEM's own lambda_1h, to " << fmt("%g", kEigenTol) << ".\n\n";
-    }
-    if (wanted("eps")) {
-      md << "### Fixed eps\n\n| eps | quantity | FreeFEM | this code | difference | tolerance | verdict |\n"
-            "|---:|---|---|---|---:|---:|---|\n";
-      for (const EpsComparison& c : comparisons) {
-        md << "| " << fmt("%g", c.eps) << " | max w | " << brief(c.ff_w) << " | " << brief(c.our_w) << " | "
-           << fmt("%.1e", c.w.difference) << " | " << fmt("%.1e", c.w.tolerance) << " | " << (c.w.agree ? "agree" : "DIFFER") << " |\n";
-        md << "| " << fmt("%g", c.eps) << " | force | " << brief(c.ff_f) << " | " << brief(c.our_f) << " | "
-           << fmt("%.1e", c.f.difference) << " | " << fmt("%.1e", c.f.tolerance) << " | " << (c.f.agree ? "agree" : "DIFFER") << " |\n";
-      }
-      md << "\nFreeFEM on " << 4 * s.eps_levels.front() << " to " << 4 * s.eps_levels.back()
-         << " cells per quarter circle with the penalty at its quadrature points, this code on h = 1/" << s.eps_ns.front()
-         << " to 1/" << s.eps_ns.back() << " with Gauss sampling: the penalty integrated over the disk, one continuum "
-            "problem. Each cell is a Richardson limit and its bar where the observed order is steady (the order in "
-            "brackets), else the finest value and its last increment; the tolerance is the sum of the two bars.\n";
-      md << "\n| eps | FreeFEM: max w - max w_eps | force - force_eps | this code: max w - max w_eps | force - force_eps |\n"
-            "|---:|---:|---:|---:|---:|\n";
-      for (size_t k = 0; k < rate.size(); ++k)
-        md << "| " << fmt("%g", s.rate_eps[k]) << " | " << fmt_above(rate[k][0], rate_noise[0], 3) << " | "
-           << fmt_above(rate[k][1], rate_noise[1], 3) << " | " << fmt_above(rate[k][2], rate_noise[2], 3) << " | "
-           << fmt_above(rate[k][3], rate_noise[3], 3) << " |\n";
-      md << "\nThe penalised answer against the exact answer with the same discrete constraint: FreeFEM on "
-         << 4 * s.rate_level << " cells per quarter circle with the penalty at the vertices (contact_hct.edp's constraint), "
-            "this code on h = 1/" << s.rate_n << " with nodal sampling (its exact solver's constraint). Each decade of eps "
-            "divides the difference by 10 "
-         << (rate_ok ? "(within 1, the last three decades): the rate eps." : "NOT within 1 over the last three decades.")
-         << "\n\n";
-    }
-    if (wanted("fig2")) {
-      md << "### Fig. 2\n\nFreeFEM on the mesh with " << 4 * s.fig2_level << " cells per quarter circle, this code at h = 1/" << our_n
-         << " (nodal sampling, results/fig2.csv); eps = " << fmt("%g", s.fig2_eps) << ", scheme (3a), nu = 0.3.\n\n| R | max w: FreeFEM | ours | max abs m12: FreeFEM | ours | force: FreeFEM | ours |\n"
-            "|---:|---:|---:|---:|---:|---:|---:|\n";
-      for (const Fig2Row& f : fig2)
-        md << "| " << fmt("%g", f.R) << " | " << fmt("%.6f", f.ff_w) << " | " << fmt("%.6f", f.our_w) << " | "
-           << fmt("%.5f", f.ff_m12) << " | " << fmt("%.5f", f.our_m12) << " | " << fmt("%.4f", f.ff_force) << " | "
-           << fmt("%.4f", f.our_force) << " |\n";
-      md << "\nAt the paper's R = " << fmt("%g", s.scene.height) << ", FreeFEM as above against ours at h = 1/" << mesh_n
-         << " (results/fig2_mesh.csv): max w differs by " << fmt("%.2e", fig2_w_diff)
-         << " (relative), within the codes' last mesh increments summed, " << fmt("%.2e", fig2_w_tol)
-         << (fig2_w_diff <= fig2_w_tol ? "" : " : NOT within") << "; the force by " << fmt("%.2e", fig2_f_diff) << ", against "
-         << fmt("%.2e", fig2_f_tol) << (fig2_f_diff <= fig2_f_tol ? "" : " : NOT within")
-         << ". FreeFEM's three quantities divided by R " << (fig2_linearity <= kLinearity ? "agree" : "DO NOT agree")
-         << " over the " << fig2.size() << " heights to " << fmt("%g", kLinearity) << " (relative): linear in R. max |m12| is taken at the contact circle, where second derivatives jump across "
-            "element edges and each code takes its own value there (FreeFEM the largest over the triangles at a vertex, "
-            "ours the mean over the elements at a node): shown, not judged; the nodal maximum of the force density grows "
-            "as the grid is refined (the force concentrates on the circle) and is not compared.\n";
-    }
-    md << "\n" << (all_ok ? "Verdict: every check agrees." : "Verdict: some checks FAIL (above).") << "\n";
-
-    if (wanted("table")) write_file_atomically(s.out + "/crosscheck_penalty_table.csv", tcsv.str());
-    if (wanted("eps")) write_file_atomically(s.out + "/crosscheck_penalty_eps.csv", ecsv.str());
-    if (wanted("fig2")) write_file_atomically(s.out + "/crosscheck_penalty_fig2.csv", fcsv.str());
-    write_file_atomically(s.out + "/crosscheck_penalty.md", md.str());
+    std::string md = "<!-- Written by build/crosscheck_penalty (make crosscheck); do not edit. -->\n\n";
+    if (wanted("table")) md += table_md(s, table, ours_contraction, lambda1);
+    if (wanted("eps")) md += eps_md(s, eps);
+    if (wanted("fig2")) md += fig2_md(s, fig2);
+    md += std::string("\n") + (all_ok ? "Verdict: every check agrees." : "Verdict: some checks FAIL (above).") + "\n";
+    if (wanted("table")) write_file_atomically(s.out + "/crosscheck_penalty_table.csv", table_csv(s, table));
+    if (wanted("eps")) write_file_atomically(s.out + "/crosscheck_penalty_eps.csv", eps_csv(s, eps));
+    if (wanted("fig2")) write_file_atomically(s.out + "/crosscheck_penalty_fig2.csv", fig2_csv(s, fig2));
+    write_file_atomically(s.out + "/crosscheck_penalty.md", md);
     std::cerr << "crosscheck_penalty: " << (all_ok ? "every check agrees" : "some checks fail") << " (" << s.out
               << "/crosscheck_penalty.md)\n";
     return all_ok ? kSuccess : kNotConverged;
