@@ -198,8 +198,7 @@ check-results: build ## rebuild every deterministic table into build/check-resul
 	@rm -rf $(CHECK_DIR); status=0; \
 	for d in rim_series table contraction fig1 fig2 continuum crosscheck crosscheck_penalty; do \
 	  mkdir -p $(CHECK_DIR)/$$d; \
-	  extra=; [ $$d = crosscheck ] && extra="--work $(CHECK_DIR)/crosscheck-work"; \
-	  [ $$d = crosscheck_penalty ] && extra="--work $(CHECK_DIR)/crosscheck-penalty-work"; \
+	  extra=; case $$d in crosscheck*) extra="--work $(CHECK_DIR)/$$d-work";; esac; \
 	  echo "== $$d"; \
 	  $(BUILD)/$$d --out $(CHECK_DIR)/$$d $$extra > $(CHECK_DIR)/$$d.log 2>&1 \
 	    || { echo "$$d failed (exit $$?); its output is in $(CHECK_DIR)/$$d.log"; status=1; continue; }; \
