@@ -60,7 +60,7 @@ void FixedSetSolver::add_columns(const std::vector<int>& nodes) {
         rhs(dof, k) = K_.coeff(dof, dof);
       }
     }
-    const Eigen::MatrixXd sol = chol_.solve_many(rhs);
+    const auto sol = chol_.solve_many(rhs);
     for (int k = 0; k < cols; ++k) columns_.emplace(missing[first + k], sol.col(k));
     correction_columns_ += cols;
   }

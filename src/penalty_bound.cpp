@@ -39,7 +39,7 @@ PenaltyBound penalty_error_bound(const Problem& p, const VectorXd& w, double eps
   B.col(0) = residual;
   B.col(1) = roundoff;
   B(centre_value_dof(p.grid), 2) = 1.0;
-  const Eigen::MatrixXd X = chol.solve_many(B);
+  const auto X = chol.solve_many(B);
   b.green = X(centre_value_dof(p.grid), 2);
   b.residual = std::sqrt(std::max(0.0, residual.dot(X.col(0))));
   b.bound = std::sqrt(b.green) * b.residual;

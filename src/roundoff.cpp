@@ -31,7 +31,7 @@ double through_inverse(const VectorXd& z, const VectorXd& residual_abs, const Ve
 }  // namespace
 
 std::vector<double> SolutionRoundoff::of(const Eigen::MatrixXd& g) const {
-  const Eigen::MatrixXd z = chol_.solve_many(g);
+  const auto z = chol_.solve_many(g);
   std::vector<double> out;
   for (Eigen::Index c = 0; c < z.cols(); ++c) out.push_back(through_inverse(z.col(c), residual_abs_, scale_));
   return out;
