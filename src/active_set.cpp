@@ -182,13 +182,13 @@ ExactResult solve_exact(const Problem& p, const ExactOptions& o, NodeSet initial
   const int nodes = static_cast<int>(p.phi.size());
   ExactResult res;
   ExactLevel level;
-  level.cells = p.grid.nx;
+  level.cells = p.grid.whole_nx();
   NodeSet A = initial.empty() ? NodeSet(nodes, 0) : std::move(initial);
   if (static_cast<int>(A.size()) != nodes) throw std::invalid_argument("initial active set has the wrong size");
   for (int q = 0; q < nodes; ++q)
     if (A[q] && !std::isfinite(p.phi[q])) A[q] = 0;  // no obstacle there: nothing to hold
   level.predicted = members(A);
-  if (o.on_iterate) o.on_iterate(p.grid.nx, 0, level.predicted, 0);
+  if (o.on_iterate) o.on_iterate(p.grid.whole_nx(), 0, level.predicted, 0);
   FixedSetSolver fs(p.K, p.F, p.phi, o.max_correction);
   std::unordered_set<size_t> seen{fingerprint(A)};
   Step s;
@@ -204,7 +204,7 @@ ExactResult solve_exact(const Problem& p, const ExactOptions& o, NodeSet initial
     NodeSet next(nodes, 0);
     for (int q = 0; q < nodes; ++q)
       next[q] = A[q] ? s.lambda[q] > -o.tol * lmax : p.phi[q] - s.w[4 * q] > o.tol * wmax;
-    if (o.on_iterate) o.on_iterate(p.grid.nx, level.pdas_iterations, members(A), differing(A, next));
+    if (o.on_iterate) o.on_iterate(p.grid.whole_nx(), level.pdas_iterations, members(A), differing(A, next));
     if (next == A) {
       done = true;
       break;
@@ -266,8 +266,8 @@ ExactResult solve_exact(const Problem& p, const Field& obstacle, const Field& lo
   std::vector<ExactLevel> coarse_levels;
   Grid coarse;
   VectorXd wc;
-  if (o.nested && g.nx % 2 == 0 && g.ny % 2 == 0 && g.nx / 2 >= o.coarsest) {
-    coarse = make_grid(g.nx / 2, g.lx(), g.ly());
+  if (o.nested && g.nx % 2 == 0 && g.ny % 2 == 0 && g.whole_nx() / 2 >= o.coarsest) {
+    coarse = coarser(g);
     ExactResult rc = solve_exact(coarse, p.spec, obstacle, load, o);
     coarse_levels = rc.levels;
     wc = std::move(rc.w);  // even an uncertified coarse answer predicts the contact set well
@@ -294,6 +294,31 @@ ExactResult solve_exact(const Grid& g, const SamplingSpec& spec, const Field& ob
   ExactResult r = solve_exact(p, obstacle, load, o);
   r.levels.back().seconds += seconds_assemble;
   return r;
+}
+
+SceneSolution solve_exact_scene(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load,
+                                const ExactOptions& o, bool use_mirrors) {
+  SceneSolution s;
+  if (use_mirrors) s.mirrors = find_mirrors(g, spec, obstacle, load);
+  if (!s.mirrors.any()) {
+    s.solved = make_problem(g, spec, obstacle, load);
+    s.result = solve_exact(s.solved, obstacle, load, o);
+    s.part_w = s.result.w, s.part_lambda = s.result.lambda;
+    return s;
+  }
+  s.unfolded = make_samples(g, spec, obstacle);  // validates the whole plate's obstacle first
+  s.solved = make_problem(part_of(g, s.mirrors), spec, obstacle, load);
+  s.result = solve_exact(s.solved, obstacle, load, o);
+  s.part_w = std::move(s.result.w), s.part_lambda = std::move(s.result.lambda);
+  const Sampling& whole = s.unfolded->sampling;
+  s.result.w = unfold_unknowns(g, s.solved.grid, s.part_w);
+  s.result.lambda = unfold_samples(whole, s.solved.sampling, s.solved.grid, s.part_lambda);
+  VectorXd held(s.result.active.size());
+  for (size_t q = 0; q < s.result.active.size(); ++q) held[q] = s.result.active[q];
+  const VectorXd unfolded = unfold_samples(whole, s.solved.sampling, s.solved.grid, held);
+  s.result.active.assign(whole.size(), 0);
+  for (int q = 0; q < whole.size(); ++q) s.result.active[q] = unfolded[q] != 0;
+  return s;
 }
 
 double exact_solve_roundoff(int n, double v) {

@@ -5,11 +5,13 @@
 // Both with grid sequencing.
 #pragma once
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "assemble.hpp"
 #include "fixed_set.hpp"
+#include "mirror.hpp"
 #include "problem.hpp"
 
 namespace plate {
@@ -33,6 +35,7 @@ struct ExactOptions {
   bool nested = true;       // start from the solution on the grid with twice the cell size
   int coarsest = 8;         // cells along x on the coarsest grid of the sequence
   int max_correction = 64;  // largest active-set change solved from the last factorisation
+  bool refine = true;       // iterative refinement with residuals in long double (any sampling but nodes)
   // Progress, on every grid as it starts (iteration 0, the rows predicted) and after each of its
   // active-set iterations: the grid's cells along x, the iteration, the rows held, and how many
   // join or leave next. Empty: silent.
@@ -50,6 +53,7 @@ struct ExactLevel {
   int primal_steps = 0;        // steps of the monotone fallback (0 unless it was needed)
   int factorizations = 0;
   long correction_columns = 0; // solves spent on small active-set changes
+  std::vector<double> refinement;  // dual solver: size of each refinement step, max |dw| / max |w| (D27)
   double seconds = 0;
 };
 
@@ -75,6 +79,21 @@ ExactResult solve_exact(const Grid& g, const SamplingSpec& spec, const Field& ob
                         const ExactOptions& o);
 // The same on a problem already assembled (from the same obstacle and load, sampled as p.spec says).
 ExactResult solve_exact(const Problem& p, const Field& obstacle, const Field& load, const ExactOptions& o);
+
+// A scene solved exactly on the part of the plate its mirror lines leave (mirror.hpp), or whole when
+// it has none or `use_mirrors` is false. The answer is the whole plate's either way: `result.w` and
+// `result.lambda` (and `active`) live on whole().grid and whole().sampling; the certificate and the
+// levels are those of the problem solved, `solved`, with the part's own w and lambda beside it.
+struct SceneSolution {
+  Mirrors mirrors;
+  Problem solved;                   // the part (or the whole plate), with K, M and F
+  std::optional<Problem> unfolded;  // the whole plate's grid, sampling and obstacle, when a part was solved
+  ExactResult result;               // on the whole plate
+  VectorXd part_w, part_lambda;     // the solve's own, on `solved` (the same as result's when whole)
+  const Problem& whole() const { return unfolded ? *unfolded : solved; }
+};
+SceneSolution solve_exact_scene(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load,
+                                const ExactOptions& o, bool use_mirrors = true);
 
 // 1/2 w^T K w - F^T w.
 double energy(const Problem& p, const VectorXd& w);

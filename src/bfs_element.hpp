@@ -9,13 +9,17 @@ using Matrix16 = Eigen::Matrix<double, 16, 16>;
 using Vector16 = Eigen::Matrix<double, 16, 1>;
 
 // The 16 local basis functions and their derivatives at local coordinates (t, s).
-struct LocalBasis {
-  Vector16 v, dx, dy, dxx, dxy, dyy;
+template <class T>
+struct LocalBasisT {
+  Eigen::Matrix<T, 16, 1> v, dx, dy, dxx, dxy, dyy;
 };
+using LocalBasis = LocalBasisT<double>;
 LocalBasis bfs_basis(double t, double s, double h);
 
 // Element matrices, integrated exactly by 4 x 4 Gauss points.
 Matrix16 bfs_stiffness(double h);  // (Lap u, Lap v) on the element
 Matrix16 bfs_mass(double h);       // (u, v) on the element
+// The stiffness in long double: for residuals that the assembled K's own rounding does not limit.
+Eigen::Matrix<long double, 16, 16> bfs_stiffness_extended(long double h);
 
 }  // namespace plate

@@ -19,14 +19,18 @@ PointValues evaluate_in(const Grid& g, const VectorXd& w, int ex, int ey, double
 }  // namespace
 
 PointValues evaluate(const Grid& g, const VectorXd& w, double x, double y) {
-  int ex, ey;
+  int ex, ey, flips = 0;
   double t, s;
-  if (!g.locate(x, y, ex, ey, t, s)) {
+  if (!g.locate(x, y, ex, ey, t, s, &flips)) {
     std::ostringstream m;
-    m << "point (" << x << ", " << y << ") is outside the plate [0, " << g.lx() << "] x [0, " << g.ly() << "]";
+    m << "point (" << x << ", " << y << ") is outside the plate [0, " << g.whole_lx() << "] x [0, " << g.whole_ly() << "]";
     throw std::invalid_argument(m.str());
   }
-  return evaluate_in(g, w, ex, ey, t, s);
+  PointValues v = evaluate_in(g, w, ex, ey, t, s);
+  // The mirror image of a symmetric plate: slopes across the line change sign, and w_xy with each.
+  if (flips & 1) v.wx = -v.wx, v.wxy = -v.wxy;
+  if (flips & 2) v.wy = -v.wy, v.wxy = -v.wxy;
+  return v;
 }
 
 // @region moments

@@ -51,7 +51,7 @@ std::vector<double> linear_step_norms(const Problem& p, double eps, int iteratio
     last = w;
   };
   Cholesky chol;
-  chol.analyze(p.K);
+  chol.analyze(p.K + p.M);  // every pattern K + S^T D S can have (spline rows reach past an element)
   VectorXd w = VectorXd::Zero(p.grid.unknowns());
   linear_scheme_level(p, eps, w, chol, o);
   if (last_iterate) *last_iterate = w;

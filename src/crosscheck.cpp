@@ -20,8 +20,9 @@ CheckValues solve_ours(int n, const SamplingSpec& spec, const Field& phi, const 
   const double radius = rim.r;
   const auto t0 = Clock::now();
   const Field no_load = [](double, double) { return 0.0; };
-  const Problem p = make_problem(make_grid(n), spec, phi, no_load);
-  const ExactResult x = solve_exact(p, phi, no_load, ExactOptions{});
+  const SceneSolution scene = solve_exact_scene(make_grid(n), spec, phi, no_load, ExactOptions{});
+  const Problem& p = scene.whole();
+  const ExactResult& x = scene.result;
   CheckValues v;
   v.code = std::string("bfs-") + to_string(spec.kind);
   v.grid = std::to_string(n) + " x " + std::to_string(n);
@@ -32,13 +33,15 @@ CheckValues solve_ours(int n, const SamplingSpec& spec, const Field& phi, const 
   for (const ExactLevel& l : x.levels) v.iterations += l.pdas_iterations;
   v.max_w = max_nodal_abs(x.w);
   for (const CheckPoint& c : kCheckPoints) v.w_at.push_back(evaluate(p.grid, x.w, c.x, c.y).w);
-  const SolutionRoundoff roundoff(p, x.w, x.lambda);
+  // Round-off of the problem solved (the part, when mirrors were used), at the whole plate's points.
+  const SolutionRoundoff roundoff(scene.solved, scene.part_w, scene.part_lambda);
   const Grid& g = p.grid;
-  Eigen::MatrixXd outputs(g.unknowns(), 1 + std::size(kCheckPoints));
+  Eigen::MatrixXd outputs(scene.solved.grid.unknowns(), 1 + std::size(kCheckPoints));
   int top = 0;  // the unknown of max |w|: a nodal value
   for (int i = 0; i < g.unknowns(); i += 4)
     if (std::abs(x.w[i]) > std::abs(x.w[top])) top = i;
-  outputs.col(0) = roundoff.unknown(top);
+  const int node = top / 4, i_top = node % (g.nx - 1) + 1, j_top = node / (g.nx - 1) + 1;
+  outputs.col(0) = roundoff.point_value(g.x(i_top), g.y(j_top));
   for (size_t k = 0; k < std::size(kCheckPoints); ++k) outputs.col(1 + k) = roundoff.point_value(kCheckPoints[k].x, kCheckPoints[k].y);
   v.noise_w = roundoff.of(outputs);
   v.force = total_contact_force(p, x.lambda);

@@ -8,6 +8,7 @@
 
 #include "dual_qp.hpp"
 #include "norms.hpp"
+#include "refinement.hpp"
 #include "stopwatch.hpp"
 
 namespace plate {
@@ -19,6 +20,7 @@ struct Schur {
   std::vector<int> rows;  // candidate rows, in the order of G
   Eigen::MatrixXd G;
   long columns = 0;       // solves spent on columns
+  Eigen::MatrixXd rhs;    // S_block^T, kept zero between blocks: allocated once, not per block
 
   // Adds `fresh` rows: Z = K^{-1} S_fresh^T in blocks, then G's new columns S_C Z (and rows, by symmetry).
   void grow(const Problem& p, const Cholesky& chol, const std::vector<int>& fresh) {
@@ -27,10 +29,12 @@ struct Schur {
     G.conservativeResize(m, m);
     for (int first = old; first < m; first += kGramBlock) {
       const int cols = std::min(kGramBlock, m - first);
-      Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(p.grid.unknowns(), cols);
+      if (rhs.rows() != p.grid.unknowns() || rhs.cols() != cols) rhs = Eigen::MatrixXd::Zero(p.grid.unknowns(), cols);
       for (int k = 0; k < cols; ++k)
         for (RowSpMat::InnerIterator it(p.sampling.S, rows[first + k]); it; ++it) rhs(it.col(), k) = it.value();
-      const Eigen::MatrixXd Z = chol.solve_many(rhs);
+      const auto Z = chol.solve_many(rhs);
+      for (int k = 0; k < cols; ++k)
+        for (RowSpMat::InnerIterator it(p.sampling.S, rows[first + k]); it; ++it) rhs(it.col(), k) = 0;
       columns += cols;
       // Rows up to this block's last: later rows get theirs when their own block comes.
       for (int i = 0; i < first + cols; ++i)
@@ -57,6 +61,23 @@ std::vector<int> violated_rows(const VectorXd& gap, const NodeSet& in_schur, dou
   return v;
 }
 
+// The refinement (D27) of the answer on the rows that push.
+std::vector<double> refine_held(const Problem& p, const Cholesky& chol, const Schur& schur, VectorXd& mu, VectorXd& w) {
+  std::vector<int> held, rows;  // positions in G, and their sample rows
+  for (int i = 0; i < mu.size(); ++i)
+    if (mu[i] > 0) held.push_back(i), rows.push_back(schur.rows[i]);
+  const int m = static_cast<int>(held.size());
+  Eigen::MatrixXd G_AA(m, m);
+  VectorXd mu_A(m);
+  for (int i = 0; i < m; ++i) {
+    mu_A[i] = mu[held[i]];
+    for (int k = 0; k < m; ++k) G_AA(i, k) = schur.G(held[i], held[k]);
+  }
+  const std::vector<double> sizes = refine(p, chol, rows, G_AA, mu_A, w);
+  for (int i = 0; i < m; ++i) mu[held[i]] = mu_A[i];
+  return sizes;
+}
+
 }  // namespace
 
 double answer_scale(const Problem& p, const VectorXd& w_free) {
@@ -73,7 +94,7 @@ ExactResult solve_exact_rows(const Problem& p, const ExactOptions& o, const Node
   const int rows = p.sampling.size();
   ExactResult res;
   ExactLevel level;
-  level.cells = p.grid.nx;
+  level.cells = p.grid.whole_nx();
   Cholesky chol;
   chol.factorize(p.K);
   const VectorXd w0 = chol.solve(p.F);  // the plate with no obstacle
@@ -89,33 +110,41 @@ ExactResult solve_exact_rows(const Problem& p, const ExactOptions& o, const Node
   }
   const size_t cap = std::max(256, 2 * p.sampling.edge_size());  // rows added per round at most
   level.predicted = static_cast<int>(fresh.size());
-  if (o.on_iterate) o.on_iterate(p.grid.nx, 0, level.predicted, 0);
+  if (o.on_iterate) o.on_iterate(p.grid.whole_nx(), 0, level.predicted, 0);
   VectorXd w = w0, mu;
-  while (!fresh.empty()) {
-    if (level.pdas_iterations++ >= o.max_iter) {
-      res.message = "the candidate rows kept growing for max-iter = " + std::to_string(o.max_iter) + " rounds";
-      break;
-    }
-    for (int q : fresh) in_schur[q] = 1;
-    schur.grow(p, chol, fresh);
-    VectorXd b(schur.rows.size());
-    for (size_t i = 0; i < schur.rows.size(); ++i) b[i] = p.phi[schur.rows[i]] - p.sampling.S.row(schur.rows[i]).dot(w0);
-    const DualQPResult d = solve_dual_qp(schur.G, b, slack, 20 * static_cast<int>(b.size()) + 100);
-    level.dual_steps += d.steps;
-    level.dependent_rows += d.dependent;
-    mu = d.mu;
-    VectorXd force = VectorXd::Zero(p.grid.unknowns());  // S_C^T mu
-    for (size_t i = 0; i < schur.rows.size(); ++i)
-      if (mu[i] != 0)
-        for (RowSpMat::InnerIterator it(p.sampling.S, schur.rows[i]); it; ++it) force[it.col()] += mu[i] * it.value();
-    w = w0 + chol.solve(force);
-    if (!d.ok) {
-      res.message = d.message;
-      break;
+  for (;;) {
+    if (!fresh.empty()) {
+      if (level.pdas_iterations++ >= o.max_iter) {
+        res.message = "the candidate rows kept growing for max-iter = " + std::to_string(o.max_iter) + " rounds";
+        break;
+      }
+      for (int q : fresh) in_schur[q] = 1;
+      schur.grow(p, chol, fresh);
+      VectorXd b(schur.rows.size());
+      for (size_t i = 0; i < schur.rows.size(); ++i) b[i] = p.phi[schur.rows[i]] - p.sampling.S.row(schur.rows[i]).dot(w0);
+      const DualQPResult d = solve_dual_qp(schur.G, b, slack, 20 * static_cast<int>(b.size()) + 100);
+      level.dual_steps += d.steps;
+      level.dependent_rows += d.dependent;
+      mu = d.mu;
+      VectorXd force = VectorXd::Zero(p.grid.unknowns());  // S_C^T mu
+      for (size_t i = 0; i < schur.rows.size(); ++i)
+        if (mu[i] != 0)
+          for (RowSpMat::InnerIterator it(p.sampling.S, schur.rows[i]); it; ++it) force[it.col()] += mu[i] * it.value();
+      w = w0 + chol.solve(force);
+      if (!d.ok) {
+        res.message = d.message;
+        break;
+      }
     }
     fresh = violated_rows(p.sampling.S * w - p.phi, in_schur, slack, cap);
-    if (o.on_iterate) o.on_iterate(p.grid.nx, level.pdas_iterations, static_cast<int>(schur.rows.size()),
-                                   static_cast<int>(fresh.size()));
+    // The answer for these rows, refined; the refined plate may violate a row the rounded one did not.
+    if (fresh.empty() && o.refine) {
+      level.refinement = refine_held(p, chol, schur, mu, w);
+      fresh = violated_rows(p.sampling.S * w - p.phi, in_schur, slack, cap);
+    }
+    if (o.on_iterate && level.pdas_iterations > 0)
+      o.on_iterate(p.grid.whole_nx(), level.pdas_iterations, static_cast<int>(schur.rows.size()), static_cast<int>(fresh.size()));
+    if (fresh.empty()) break;
   }
   res.lambda = VectorXd::Zero(rows);  // mu is a force; lambda its density per unit area or length
   res.active = NodeSet(rows, 0);

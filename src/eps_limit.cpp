@@ -16,7 +16,7 @@ std::vector<VectorXd> penalised_path(const Problem& p, double eps) {
   o.tol = 0;  // once (3a) repeats its active set its step is exactly zero
   o.max_iter = 200;
   Cholesky chol;
-  chol.analyze(p.K);
+  chol.analyze(p.K + p.M);  // every pattern K + S^T D S can have (spline rows reach past an element)
   VectorXd w = VectorXd::Zero(p.grid.unknowns());
   std::vector<VectorXd> path;
   for (int s = 0;; ++s) {

@@ -6,12 +6,16 @@
 
 namespace plate {
 
-struct Quadrature1D {
-  std::vector<double> points;   // in (0, 1), increasing
-  std::vector<double> weights;  // sum to 1
+template <class T>
+struct QuadratureRule {
+  std::vector<T> points;   // in (0, 1), increasing
+  std::vector<T> weights;  // sum to 1
 };
+using Quadrature1D = QuadratureRule<double>;
 
-// n-point rule, exact for polynomials of degree 2n - 1.
-Quadrature1D gauss_legendre(int n);
+// n-point rule, exact for polynomials of degree 2n - 1; T is double or long double.
+template <class T>
+QuadratureRule<T> gauss_legendre_rule(int n);
+inline Quadrature1D gauss_legendre(int n) { return gauss_legendre_rule<double>(n); }
 
 }  // namespace plate

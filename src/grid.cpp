@@ -33,9 +33,20 @@ std::array<int, 16> Grid::element_dofs(int ex, int ey) const {
   return d;
 }
 
-bool Grid::locate(double x, double y, int& ex, int& ey, double& t, double& s) const {
+Grid coarser(const Grid& g) {
+  if (g.nx % 2 || g.ny % 2) throw std::invalid_argument("coarser: the grid's cell counts must be even");
+  Grid c = g;
+  c.nx /= 2, c.ny /= 2, c.h *= 2;
+  return c;
+}
+
+bool Grid::locate(double x, double y, int& ex, int& ey, double& t, double& s, int* flips) const {
   const double slack = 1e-12 * h;
-  if (!(x >= -slack && x <= lx() + slack && y >= -slack && y <= ly() + slack)) return false;
+  if (!(x >= -slack && x <= whole_lx() + slack && y >= -slack && y <= whole_ly() + slack)) return false;
+  int f = 0;
+  if (mirror_x && x > lx()) x = 2 * lx() - x, f |= 1;
+  if (mirror_y && y > ly()) y = 2 * ly() - y, f |= 2;
+  if (flips) *flips = f;
   ex = std::min(nx - 1, std::max(0, static_cast<int>(std::floor(x / h))));
   ey = std::min(ny - 1, std::max(0, static_cast<int>(std::floor(y / h))));
   t = x / h - ex;

@@ -6,15 +6,19 @@
 namespace plate {
 
 // Value and first two derivatives (with respect to t) of the four Hermite cubics at t.
-// Order: [end 0 value, end 0 slope, end 1 value, end 1 slope].
-struct Hermite1D {
-  std::array<double, 4> d0, d1, d2;
+// Order: [end 0 value, end 0 slope, end 1 value, end 1 slope]. T is double, or long double for
+// the residuals of iterative refinement.
+template <class T>
+struct HermiteValues {
+  std::array<T, 4> d0, d1, d2;
 };
+using Hermite1D = HermiteValues<double>;
 
 // @region hermite-cubics
-inline Hermite1D hermite_cubics(double t) {
-  const double t2 = t * t, t3 = t2 * t;
-  Hermite1D h;
+template <class T>
+HermiteValues<T> hermite_cubics(T t) {
+  const T t2 = t * t, t3 = t2 * t;
+  HermiteValues<T> h;
   h.d0 = {1 - 3 * t2 + 2 * t3, t - 2 * t2 + t3, 3 * t2 - 2 * t3, -t2 + t3};
   h.d1 = {-6 * t + 6 * t2, 1 - 4 * t + 3 * t2, 6 * t - 6 * t2, -2 * t + 3 * t2};
   h.d2 = {-6 + 12 * t, -4 + 6 * t, 6 - 12 * t, -2 + 6 * t};
@@ -24,8 +28,9 @@ inline Hermite1D hermite_cubics(double t) {
 
 // Physical basis on a cell of width h: the slope functions carry a factor h so that their
 // x-derivative is 1 at their node, and each x-derivative divides by h.
-inline Hermite1D hermite_physical(double t, double h) {
-  Hermite1D r = hermite_cubics(t);
+template <class T>
+HermiteValues<T> hermite_physical(T t, T h) {
+  HermiteValues<T> r = hermite_cubics(t);
   for (int k : {1, 3}) {
     r.d0[k] *= h;
     r.d1[k] *= h;

@@ -39,14 +39,16 @@ LineForce line_force(const Problem& p, const VectorXd& lambda, int harmonics) {
   if (s.edge_size() == 0) return f;
   f.theta = s.edge.theta;
   f.length = s.edge.length;
-  const int m = s.edge_size(), reach = (s.edge_spline_degree + 1) / 2;
+  const int m = s.edge_size();
+  if (s.edge_spline_degree > 0) {
+    if (m != s.edge_knots) throw std::invalid_argument("line_force: the spline rows of part of a circle (unfold them first)");
+    f.spline_degree = s.edge_spline_degree;
+    f.coefficients.assign(lambda.data() + s.edge_begin, lambda.data() + s.size());
+  }
   for (int k = 0; k < m; ++k) {
     const int row = s.edge_begin + k;
     // Points: the multiplier is q there. B-spline rows: q(theta_k) = sum_i lambda_i B(k - i).
-    double q = s.edge_spline_degree > 0 ? 0.0 : lambda[row];
-    for (int d = -reach; s.edge_spline_degree > 0 && d <= reach; ++d)
-      q += lambda[s.edge_begin + ((k + d) % m + m) % m] * cardinal_bspline(s.edge_spline_degree, d);
-    f.q.push_back(q);
+    f.q.push_back(s.edge_spline_degree > 0 ? line_force_value(f, f.theta[k]) : lambda[row]);
     f.total += s.weights[row] * lambda[row];
   }
   summarise(f);
@@ -94,6 +96,16 @@ LineForce binned_line_force(const Problem& p, const VectorXd& lambda, const Edge
     force[((b % bins) + bins) % bins] += p.sampling.weights[s] * lambda[s];
   }
   return line_force_from_point_forces(theta, force, circle.r);
+}
+
+double line_force_value(const LineForce& f, double theta) {
+  if (f.spline_degree == 0) return line_force_at(f, theta);
+  const int m = static_cast<int>(f.coefficients.size()), p = f.spline_degree;
+  const double u = theta / (2 * M_PI / m);  // in knot spacings
+  const int first = static_cast<int>(std::floor(u - 0.5 * (p + 1)));
+  double q = 0;
+  for (int j = first; j <= first + p + 2; ++j) q += f.coefficients[((j % m) + m) % m] * cardinal_bspline(p, u - j);
+  return q;
 }
 
 double line_force_fit(const LineForce& f, double theta) {

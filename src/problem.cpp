@@ -25,16 +25,18 @@ void check_obstacle_on_boundary(const Grid& g, const Field& obstacle) {
       throw std::invalid_argument(m.str());
     }
   };
+  // The clamped edges only: a mirror line is free to lift.
   for (int k = 0; k < g.nx * per_edge; ++k) {
     const double x = k * g.h / per_edge;
     check(x, 0.0);
-    check(g.lx() - x, g.ly());
+    if (!g.mirror_y) check(g.lx() - x, g.ly());
   }
   for (int k = 0; k < g.ny * per_edge; ++k) {
     const double y = k * g.h / per_edge;
-    check(g.lx(), y);
+    if (!g.mirror_x) check(g.lx(), y);
     check(0.0, g.ly() - y);
   }
+  if (g.mirror_x) check(g.lx(), 0.0);  // the bottom edge's far end, which the right edge's loop no longer visits
 }
 
 namespace {
@@ -87,11 +89,11 @@ static SpMat sampling_mass(const Grid& g, const Sampling& s) {
   return M;
 }
 
-Problem make_problem(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load) {
+Problem make_samples(const Grid& g, const SamplingSpec& spec, const Field& obstacle) {
   check_obstacle_on_boundary(g, obstacle);
   check_obstacle_at_nodes(g, obstacle);
   // Without an edge curve the edge kinds keep their interior samples alone.
-  Problem p{g, make_sampling(g, spec.kind, spec.edge, spec.splines), {}, {}, {}, {}, spec};
+  Problem p{g, make_sampling(g, spec.kind, spec.edge, spec.rows), {}, {}, {}, {}, spec};
   p.phi.resize(p.sampling.size());
   for (int i = 0; i < p.sampling.size(); ++i) {
     const int k = i - p.sampling.edge_begin;
@@ -99,6 +101,11 @@ Problem make_problem(const Grid& g, const SamplingSpec& spec, const Field& obsta
     check_obstacle_value(p.sampling.x[i], p.sampling.y[i], v);
     p.phi[i] = v;
   }
+  return p;
+}
+
+Problem make_problem(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load) {
+  Problem p = make_samples(g, spec, obstacle);
   p.K = assemble_matrix(g, bfs_stiffness(g.h));
   p.M = sampling_mass(g, p.sampling);
   p.F = assemble_load(g, load, "load");

@@ -12,9 +12,9 @@ namespace plate {
 struct SamplingSpec {
   SamplingKind kind = SamplingKind::Nodes;
   EdgeCurve edge;
-  EdgeSplines splines;  // edge rows at points, or averaged against B-splines (make_sampling)
+  EdgeRows rows;  // edge rows at points, or averaged against B-splines (make_sampling)
   SamplingSpec() = default;
-  SamplingSpec(SamplingKind k, EdgeCurve e = {}, EdgeSplines sp = {}) : kind(k), edge(std::move(e)), splines(sp) {}
+  SamplingSpec(SamplingKind k, EdgeCurve e = {}, EdgeRows r = {}) : kind(k), edge(std::move(e)), rows(r) {}
 };
 
 struct Problem {
@@ -30,11 +30,14 @@ struct Problem {
 // Throws std::invalid_argument (naming "obstacle" or "load") for NaN or +inf values, and for an
 // obstacle that is not below zero on the boundary (then no clamped plate can satisfy w >= phi).
 Problem make_problem(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load);
+// The grid, its sampling and the obstacle at the samples, without K, M and F: what the reports of
+// a solve on part of the plate read on the whole (mirror.hpp). Validates as make_problem does.
+Problem make_samples(const Grid& g, const SamplingSpec& spec, const Field& obstacle);
 // The same without an edge curve.
 Problem make_problem(const Grid& g, SamplingKind kind, const Field& obstacle, const Field& load);
 
-// Samples phi along the boundary (every node and 8 points per cell edge) and throws
-// std::invalid_argument if phi >= 0 or NaN at any of them.
+// Samples phi along the clamped edges (every node and 8 points per cell edge) and throws
+// std::invalid_argument if phi >= 0 or NaN at any of them. A mirror edge is not checked.
 void check_obstacle_on_boundary(const Grid& g, const Field& obstacle);
 
 }  // namespace plate

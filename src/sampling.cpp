@@ -74,15 +74,18 @@ Sampling gauss_points(const Grid& g) {
 }
 
 // @region nodal-sampling
+// On a mirror line a node stands for itself and its image: half its area is this grid's.
 Sampling grid_nodes(const Grid& g) {
   const int npts = g.interior_nodes();
-  Sampling s{SamplingKind::Nodes, {}, {}, VectorXd::Constant(npts, g.h * g.h), RowSpMat(npts, g.unknowns()), 0, {}, 0};
+  Sampling s{SamplingKind::Nodes, {}, {}, VectorXd(npts), RowSpMat(npts, g.unknowns()), 0, {}, 0};
   s.S.reserve(npts);
-  for (int j = 1; j < g.ny; ++j)
-    for (int i = 1; i < g.nx; ++i) {
+  for (int j = 1; j <= g.ny; ++j)
+    for (int i = 1; i <= g.nx; ++i) {
+      if (!g.is_interior(i, j)) continue;
       const int p = g.node(i, j);
       s.x.push_back(g.x(i));
       s.y.push_back(g.y(j));
+      s.weights[p] = g.h * g.h * (g.mirror_x && i == g.nx ? 0.5 : 1.0) * (g.mirror_y && j == g.ny ? 0.5 : 1.0);
       s.S.startVec(p);
       s.S.insertBack(p, g.dof(i, j, kW)) = 1.0;
     }
@@ -127,25 +130,25 @@ void add_point_row(const Grid& g, double x, double y, double scale, std::map<int
 }
 
 // @region edge-splines
-// The constraint on a circle averaged against B-splines of the angle (not yet numbered in the document),
+// Eq. (D25): the constraint on a circle averaged against B-splines of the angle,
 //   (S w)_j = (1 / Delta) int B_j(theta) w_h(x(theta)) dtheta >= phi_j,
-// B_j the cardinal B-spline of degree `degree` centred at theta_j = 2 pi j / M, Delta = 2 pi / M,
-// the knots about `cells` cells apart (M a multiple of 8, for the square's symmetries). The weight
-// of row j is r Delta = r int B_j, so its multiplier lambda_j is a force per unit length and the
-// line load is q(theta) = sum_j lambda_j B_j(theta), nonnegative where every lambda_j is: a
-// multiplier space coarse enough for the bicubic plate to tell its functions apart, where a point
-// per cell is not. The integral is taken by 4 Gauss points on pieces about a cell long between the
-// spline's breaks; phi_j is the obstacle at theta_j (on the paper's scene, the rim's height).
-EdgePoints spline_rows(const Grid& g, const EdgeCurve& c, double cells, int degree,
-                       std::vector<std::map<int, double>>& rows) {
-  const double length = 2 * M_PI * c.r;
-  const int M = 8 * (1 << std::max(0, static_cast<int>(std::lround(std::log2(length / (8 * cells * g.h))))));
-  if (M < degree + 2) throw std::invalid_argument("--edge-rows: the circle is too short for its splines");
+// B_j the cardinal B-spline of degree p centred at theta_j = 2 pi j / M, Delta = 2 pi / M. The
+// weight of row j is r Delta = r int B_j, so its multiplier lambda_j is a force per unit length and
+// the line load is q(theta) = sum_j lambda_j B_j(theta), nonnegative where every lambda_j is. The
+// knots must be farther apart than the cells, or the plate cannot tell the multipliers apart (a
+// point per cell scatters by 10 %), and farther apart on finer grids, so that what the plate
+// misses at the scale of h, seen at the scale of the knots, shrinks. The load's error has two parts,
+// about (h / H)^3 from the plate and H^(p+1) from the splines; for cubics (p = 3) they fall together,
+// like h^(12/7), when H = h^(3/7) r^(4/7), the spacing we take (r the radius: no constant is fitted).
+// The integral is taken by 4 Gauss points on pieces about a cell long between the spline's breaks;
+// phi_j is the obstacle at theta_j (on the paper's scene, the rim's height).
+EdgePoints spline_rows(const Grid& g, const EdgeCurve& c, const EdgeRows& how, std::vector<std::map<int, double>>& rows) {
+  const int M = spline_knots(c.r, g.h, how), degree = how.degree;
   const double delta = 2 * M_PI / M, half = 0.5 * (degree + 1);
   const int pieces = std::max(1, static_cast<int>(std::ceil(c.r * delta / g.h)));  // per knot spacing
   const Quadrature1D q = gauss_legendre(4);
   EdgePoints e;
-  e.length = length;
+  e.length = 2 * M_PI * c.r;
   rows.assign(M, {});
   for (int j = 0; j < M; ++j) {
     const double tj = j * delta, cj = std::cos(tj), sj = std::sin(tj);
@@ -169,17 +172,36 @@ EdgePoints spline_rows(const Grid& g, const EdgeCurve& c, double cells, int degr
 // Keeps the interior rows farther than 1e-9 h from the curve (a node on the circle would repeat an
 // edge point) and appends one row per edge point: the values of the element's 16 basis functions
 // there, so that (S w)_p = w_h(x_p) exactly. A point on an element side may use either element
-// (w_h is C^1).
-void add_edge(const Grid& g, const EdgeCurve& curve, const EdgeSplines& splines, Sampling& s) {
+// (w_h is C^1). On the part of a symmetric plate only the points of the part are kept (those of
+// the whole curve, so the part and the whole plate solve one discrete problem), and a point on a
+// mirror line, which stands for itself alone, keeps half its weight.
+void add_edge(const Grid& g, const EdgeCurve& curve, const EdgeRows& how, Sampling& s) {
   std::vector<std::map<int, double>> rows;
-  EdgePoints e;
-  if (splines.degree > 0) {  // make_sampling has checked that the curve is a circle
-    e = spline_rows(g, curve, splines.cells, splines.degree, rows);
-    s.edge_spline_degree = splines.degree;
+  EdgePoints whole;
+  if (how.splines_on(curve)) {  // make_sampling has checked that the curve is a circle
+    whole = spline_rows(g, curve, how, rows);
+    s.edge_spline_degree = how.degree;
+    s.edge_knots = whole.size();
   } else {
-    e = edge_points(curve, g.h);
-    rows.resize(e.size());
-    for (int k = 0; k < e.size(); ++k) add_point_row(g, e.x[k], e.y[k], 1.0, rows[k]);
+    whole = edge_points(curve, g.h);
+    rows.resize(whole.size());
+    for (int k = 0; k < whole.size(); ++k) add_point_row(g, whole.x[k], whole.y[k], 1.0, rows[k]);
+  }
+  const double on_line = 1e-9 * g.h;
+  EdgePoints e;
+  std::vector<int> kept;
+  for (int k = 0; k < whole.size(); ++k) {
+    double x = whole.x[k], y = whole.y[k], share = 1;
+    if (g.mirror_x && x > g.lx() + on_line) continue;
+    if (g.mirror_y && y > g.ly() + on_line) continue;
+    if (g.mirror_x && std::abs(x - g.lx()) <= on_line) x = g.lx(), share *= 0.5;
+    if (g.mirror_y && std::abs(y - g.ly()) <= on_line) y = g.ly(), share *= 0.5;
+    kept.push_back(k);
+    e.x.push_back(x), e.y.push_back(y);
+    e.nx.push_back(whole.nx[k]), e.ny.push_back(whole.ny[k]);
+    if (!whole.theta.empty()) e.theta.push_back(whole.theta[k]);
+    e.weight.push_back(share * whole.weight[k]);
+    e.length += e.weight.back();
   }
   std::vector<int> keep;
   for (int p = 0; p < s.size(); ++p)
@@ -187,7 +209,7 @@ void add_edge(const Grid& g, const EdgeCurve& curve, const EdgeSplines& splines,
   RowBuilder b(s, keep, e.size());
   for (int k = 0; k < e.size(); ++k) {
     b.S.startVec(b.next);
-    for (const auto& [col, val] : rows[k]) b.S.insertBack(b.next, col) = val;  // a std::map: columns in order
+    for (const auto& [col, val] : rows[kept[k]]) b.S.insertBack(b.next, col) = val;  // a std::map: columns in order
     b.weights[b.next++] = e.weight[k];
     b.x.push_back(e.x[k]);
     b.y.push_back(e.y[k]);
@@ -203,16 +225,23 @@ void add_edge(const Grid& g, const EdgeCurve& curve, const EdgeSplines& splines,
 
 }  // namespace
 
-Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge, const EdgeSplines& splines) {
-  if (splines.degree < 0 || splines.degree > 5) throw std::invalid_argument("--edge-rows: the spline degree must be 0 ... 5");
-  if (splines.degree > 0 && !(splines.cells > 0 && std::isfinite(splines.cells)))
-    throw std::invalid_argument("--edge-rows: the knot spacing in cells must be finite and > 0");
-  if (splines.degree > 0 && !(has_edge(kind) && edge.kind == EdgeCurve::Kind::Circle))
-    throw std::invalid_argument("--edge-rows spline needs edge sampling of a circle");
+int spline_knots(double r, double h, const EdgeRows& how) {
+  const double spacing = how.cells > 0 ? how.cells * h : std::pow(h, 3.0 / 7) * std::pow(r, 4.0 / 7);
+  return std::max(8, 4 * static_cast<int>(std::lround(2 * M_PI * r / spacing / 4)));
+}
+
+Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge, const EdgeRows& how) {
+  if (how.kind == EdgeRows::Kind::Splines) {
+    if (how.degree < 1 || how.degree > 5) throw std::invalid_argument("--edge-rows: the spline degree must be 1 ... 5");
+    if (!(how.cells >= 0 && std::isfinite(how.cells)))
+      throw std::invalid_argument("--edge-rows: the knot spacing in cells must be finite and > 0");
+    if (!(has_edge(kind) && edge.kind == EdgeCurve::Kind::Circle))
+      throw std::invalid_argument("--edge-rows spline needs edge sampling of a circle");
+  }
   const bool gauss = kind == SamplingKind::Gauss || kind == SamplingKind::EdgeGauss;
   Sampling s = gauss ? gauss_points(g) : grid_nodes(g);
   s.kind = kind;
-  if (has_edge(kind) && !edge.empty()) add_edge(g, edge, splines, s);
+  if (has_edge(kind) && !edge.empty()) add_edge(g, edge, how, s);
   s.edge_begin = s.size() - s.edge.size();
   return s;
 }

@@ -11,12 +11,24 @@
 
 namespace plate {
 
-// How the edge rows constrain the plate: at points (degree 0), or averaged against B-splines of
-// the given degree whose knots are about `cells` cells apart.
-struct EdgeSplines {
-  int degree = 0;
-  double cells = 3;
+// How the edge rows constrain the plate: at points about a cell apart, or averaged against
+// B-splines of the angle (circles only, D25). Auto, the default, is splines on a circle and points
+// on a polygon.
+struct EdgeRows {
+  enum class Kind { Auto, Points, Splines };
+  Kind kind = Kind::Auto;
+  int degree = 3;    // of the splines
+  double cells = 0;  // knot spacing in cells; 0: the spacing h^(3/7) r^(4/7) of (D25)
+  bool splines_on(const EdgeCurve& c) const {
+    return kind == Kind::Splines || (kind == Kind::Auto && c.kind == EdgeCurve::Kind::Circle);
+  }
+  static EdgeRows points() { return EdgeRows{Kind::Points, 0, 0}; }
+  static EdgeRows splines(int degree, double cells = 0) { return EdgeRows{Kind::Splines, degree, cells}; }
 };
+// The number of knots (D25) on a circle of radius r: 2 pi r over the spacing, a multiple of four
+// (so that the square's symmetries and the mirrors about its centre lines map knots onto knots),
+// at least 8.
+int spline_knots(double r, double h, const EdgeRows& rows);
 // The centred cardinal B-spline of degree p, x in knot spacings (1 at 0 for the hat, p = 1).
 double cardinal_bspline(int p, double x);
 
@@ -38,6 +50,7 @@ struct Sampling {
   int edge_begin = 0;
   EdgePoints edge;           // the edge rows' points, normals and angles
   int edge_spline_degree = 0;  // > 0: the edge rows are B-spline averages, their points the knots
+  int edge_knots = 0;          // splines: knots on the whole circle (the part may hold fewer)
   int size() const { return static_cast<int>(x.size()); }
   int edge_size() const { return size() - edge_begin; }
   // Whether every row is a bound on one nodal value (row q on interior node q).
@@ -46,9 +59,9 @@ struct Sampling {
 
 // `edge` is used by the Edge kinds only: they sample it, and drop the interior samples that lie
 // on it (a node on the circle would repeat an edge point, or stand for the line as an area).
-// With splines.degree > 0 (circles only) each edge row is the constraint averaged against a
-// B-spline of the angle; degree 0: one row per point, about a cell apart.
-Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge = {}, const EdgeSplines& splines = {});
+// On a circle with spline rows (rows.splines_on) each edge row is the constraint averaged against a
+// B-spline of the angle; otherwise one row per point, about a cell apart.
+Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge = {}, const EdgeRows& rows = {});
 const char* to_string(SamplingKind kind);
 // The sampling named by to_string; throws std::invalid_argument naming --sampling otherwise.
 SamplingKind sampling_kind(const std::string& name);

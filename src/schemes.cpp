@@ -128,7 +128,7 @@ LevelRecord nonlinear_scheme_level(const Problem& p, double eps, VectorXd& w, Ch
         d[i] = active[i] ? p.sampling.weights[i] / eps : 0.0;
         d_phi[i] = active[i] ? d[i] * p.phi[i] : 0.0;  // phi is finite wherever it can be active
       }
-      // K's pattern contains every S^T D S, so the symbolic analysis of K serves every factorisation.
+      // The symbolic analysis of K + M (in solve) serves every factorisation.
       const SpMat A = p.K + weighted_gram(p.sampling.S, d, p.grid.unknowns());
       factorize_timed(chol, A, seconds_factorize, eps / o.eps_unit);
       ++r.factorizations;
@@ -171,7 +171,9 @@ SolveResult solve(const Problem& p, const SolveOptions& o) {
   res.w = VectorXd::Zero(p.grid.unknowns());  // starting guess w^{eps,0} = 0
   const auto t_start = Clock::now();
   Cholesky chol;
-  chol.analyze(p.K);
+  // K + S^T W S has every pattern K + S^T D S can have: spline rows (D25) couple unknowns of
+  // elements that share no node, so K's own pattern would not do.
+  chol.analyze(p.K + p.M);
   res.seconds_factorize += seconds_since(t_start);
   VectorXd previous_level;
 // @region continuation

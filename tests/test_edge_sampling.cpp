@@ -161,7 +161,7 @@ TEST(EdgeSampling, LineLoadIsPositiveAllRoundWithTheSquaresSymmetry) {
   const ExactResult r = certified(p);
   const LineForce f = line_force(p, r.lambda);
   const int M = static_cast<int>(f.q.size());
-  ASSERT_EQ(M % 8, 0);
+  ASSERT_EQ(M % 4, 0);
   EXPECT_GT(f.min, 0.0);
   for (int k = 0; k < M; ++k) {  // theta -> -theta, pi/2 - theta, theta + pi/2
     EXPECT_NEAR(f.q[k], f.q[(M - k) % M], 1e-9 * f.max);
@@ -216,13 +216,16 @@ TEST(EdgeSampling, CertificateHoldsWhereTouchingRowsAreDependent) {
   }
 }
 
-TEST(EdgeSampling, ObservedOrderIsSteadyAndAtLeastTwo) {
+// With spline rows and refinement the answer converges with a steady order to n = 512, where the
+// rounding of double precision used to stop it at n = 256 (results/continuum.md before them).
+TEST(EdgeSampling, ObservedOrderIsSteadyAndAtLeastTwoThroughFiveHundredAndTwelve) {
   std::vector<double> w, force;
-  for (int n : {16, 32, 64, 128}) {
-    const Problem p = edge_problem(n);
-    const ExactResult r = certified(p);
-    w.push_back(max_nodal_abs(r.w));
-    force.push_back(total_contact_force(p, r.lambda));
+  const PaperScene& s = paper_scene();
+  for (int n : {64, 128, 256, 512}) {
+    const SceneSolution x = solve_exact_scene(make_grid(n), SamplingSpec{SamplingKind::Edge, s.rim()}, s.obstacle(), kNoLoad, ExactOptions{});
+    ASSERT_TRUE(x.result.converged) << x.result.message;
+    w.push_back(max_nodal_abs(x.result.w));
+    force.push_back(total_contact_force(x.whole(), x.result.lambda));
   }
   for (const auto* v : {&w, &force}) {
     const auto& s = *v;
@@ -233,6 +236,6 @@ TEST(EdgeSampling, ObservedOrderIsSteadyAndAtLeastTwo) {
     EXPECT_GT(d2 * d3, 0.0);
     EXPECT_GE(p1, 2.0);
     EXPECT_GE(p2, 2.0);
-    EXPECT_LT(std::abs(p1 - p2), 0.5);
+    EXPECT_LT(std::abs(p1 - p2), 0.3);  // steady, as continuum's verdict requires
   }
 }

@@ -58,7 +58,7 @@ std::string linear_history(const Problem& p, double eps, double lambda, int max_
       << fmt_above(step / (eps * lambda), step_noise / (eps * lambda), 4) << '\n';
   };
   Cholesky chol;
-  chol.analyze(p.K);
+  chol.analyze(p.K + p.M);  // every pattern K + S^T D S can have (spline rows reach past an element)
   VectorXd w = VectorXd::Zero(p.grid.unknowns());
   linear_scheme_level(p, eps, w, chol, opt);
   return o.str();

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "atomic_file.hpp"
@@ -112,7 +113,8 @@ double answer_scale(const plate::Problem& p) {
 struct Options {
   int n = 4;
   double lx = 1.0, ly = 1.0;
-  std::string obstacle = "cylinder", load = "0", scheme = "exact", sampling = "edge", edge = "auto", edge_rows = "points";
+  std::string obstacle = "cylinder", load = "0", scheme = "exact", sampling = "edge", edge = "auto", edge_rows = "auto",
+              symmetry = "auto";
   double R = 0.0625, radius = 0.25, nu = plate::kPoissonRatio;  // the paper's cylinder (a test holds these to reference/)
   std::string centre = "0.5,0.5";
   plate::SolveOptions opt;
@@ -122,7 +124,7 @@ struct Options {
   bool rate = false, quiet = false, no_globalise = false, no_nested = false;
   CLI::Option *eps_opt = nullptr, *eps_start_opt = nullptr, *eps_min_opt = nullptr, *tol_opt = nullptr,
               *max_iter_opt = nullptr, *n_opt = nullptr, *sampling_opt = nullptr, *edge_opt = nullptr, *csv_opt = nullptr,
-              *edge_rows_opt = nullptr;
+              *edge_rows_opt = nullptr, *symmetry_opt = nullptr;
 };
 
 void add_options(CLI::App& app, Options& o) {
@@ -162,9 +164,16 @@ void add_options(CLI::App& app, Options& o) {
                  "(interior samples alone), circle:cx,cy,r, or polygon:x1,y1;x2,y2;... (about one point per h)")
       ->capture_default_str();
   o.edge_rows_opt = app.add_option("--edge-rows", o.edge_rows,
-                 "how edge sampling constrains a circle: points (one row per point, about a cell apart) or "
-                 "spline:DEGREE,CELLS (w averaged against B-splines of the angle, knots about CELLS cells apart; "
-                 "with spline:3,6 the line load is within 1e-3 of the mean of the rim-contact series at every knot on n = 128)")
+                 "how edge sampling constrains the edge: auto (spline on a circle, points on a polygon), points (one "
+                 "row per point, about a cell apart: the line load scatters by some 10 %), spline (w averaged against "
+                 "cubic B-splines of the angle, knots h^(3/7) r^(4/7) apart: a line load that converges point by "
+                 "point), or spline:DEGREE[,CELLS] (degree 1 ... 5, knots CELLS cells apart if given)")
+      ->capture_default_str();
+  o.symmetry_opt = app.add_option("--symmetry", o.symmetry,
+                 "exact scheme: auto (solve on the half or quarter of the plate that the scene's mirror lines "
+                 "x = lx/2, y = ly/2 leave, found by checking phi and f at every sample against its mirror image; "
+                 "the outputs are the whole plate's) or none (always the whole plate)")
+      ->check(CLI::IsMember({"auto", "none"}))
       ->capture_default_str();
   o.eps_opt = app.add_option("--eps", o.eps_fixed, "solve at this eps only (no continuation); every eps is in units of lx^4, so it means the same in any unit of length")->check(kFinitePositive);
   o.eps_start_opt = app.add_option("--eps-start", o.opt.eps_start, "first eps of the continuation")
@@ -207,17 +216,29 @@ struct Run {
   bool exact = false;
   plate::SolveOptions opt;
   plate::ExactOptions exact_opt;
+  bool use_mirrors = true;
   plate::Report report;
 };
 
-// "points" or "spline:DEGREE,CELLS"; throws std::invalid_argument naming --edge-rows otherwise.
-plate::EdgeSplines parse_edge_rows(const std::string& text) {
-  if (text == "points") return {};
-  const std::string bad = "--edge-rows '" + text + "': expected points or spline:DEGREE,CELLS (DEGREE 1 ... 5, CELLS > 0)";
+// "auto", "points", "spline" or "spline:DEGREE[,CELLS]"; throws std::invalid_argument naming
+// --edge-rows otherwise.
+plate::EdgeRows parse_edge_rows(const std::string& text) {
+  if (text == "auto") return {};
+  if (text == "points") return plate::EdgeRows::points();
+  if (text == "spline") return plate::EdgeRows::splines(plate::EdgeRows{}.degree);
+  const std::string bad = "--edge-rows '" + text + "': expected auto, points, spline or spline:DEGREE[,CELLS] (DEGREE 1 ... 5, CELLS > 0)";
   if (text.rfind("spline:", 0) != 0) throw std::invalid_argument(bad);
-  const auto [degree, cells] = parse_pair("--edge-rows", text.substr(7));
-  if (!(degree >= 1 && degree <= 5 && degree == std::floor(degree) && cells > 0)) throw std::invalid_argument(bad);
-  return plate::EdgeSplines{static_cast<int>(degree), cells};
+  const std::string rest = text.substr(7);
+  char* end = nullptr;
+  const double degree = std::strtod(rest.c_str(), &end);
+  double cells = 0;
+  if (*end == ',') {
+    const char* c = end + 1;
+    cells = std::strtod(c, &end);
+    if (end == c || !(cells > 0) || !std::isfinite(cells)) throw std::invalid_argument(bad);
+  }
+  if (*end != '\0' || !(degree >= 1 && degree <= 5 && degree == std::floor(degree))) throw std::invalid_argument(bad);
+  return plate::EdgeRows::splines(static_cast<int>(degree), cells);
 }
 
 // Throws std::invalid_argument naming the option at fault; nothing has been written yet.
@@ -236,8 +257,8 @@ Run check(const Options& o) {
     r.phi = expression("--obstacle", o.obstacle);
   }
   if (o.edge != "auto") r.spec.edge = parse_edge(o.edge);
-  r.spec.splines = parse_edge_rows(o.edge_rows);
-  if (r.spec.splines.degree > 0 && !(has_edge(r.spec.kind) && r.spec.edge.kind == EdgeCurve::Kind::Circle))
+  r.spec.rows = parse_edge_rows(o.edge_rows);
+  if (r.spec.rows.kind == EdgeRows::Kind::Splines && !(has_edge(r.spec.kind) && r.spec.edge.kind == EdgeCurve::Kind::Circle))
     throw std::invalid_argument("--edge-rows spline needs edge sampling of a circle (--sampling edge, the cylinder or --edge circle:...)");
   if (!o.line_csv_path.empty() && !has_edge(r.spec.kind))
     throw std::invalid_argument("--line-csv needs edge sampling (--sampling edge or edge-gauss)");
@@ -249,9 +270,10 @@ Run check(const Options& o) {
     for (const auto* opt : {o.eps_opt, o.eps_start_opt, o.eps_min_opt})
       if (opt->count()) throw std::invalid_argument(opt->get_name() + " has no meaning for --scheme exact (there is no eps)");
     if (o.rate) throw std::invalid_argument("--rate describes the linear scheme's contraction: it needs a penalty scheme");
-  } else if (o.no_globalise || o.no_nested) {
-    throw std::invalid_argument("--no-globalise and --no-nested apply to --scheme exact only");
+  } else if (o.no_globalise || o.no_nested || o.symmetry_opt->count()) {
+    throw std::invalid_argument("--no-globalise, --no-nested and --symmetry apply to --scheme exact only");
   }
+  r.use_mirrors = o.symmetry == "auto";
   r.exact_opt.tol = o.tol_opt->count() ? o.opt.tol : r.exact_opt.tol;
   r.exact_opt.max_iter = o.max_iter_opt->count() ? o.opt.max_iter : r.exact_opt.max_iter;
   r.exact_opt.globalise = !o.no_globalise;
@@ -285,9 +307,9 @@ void echo(const CLI::App& app, const Options& o, Run& r) {
   for (const auto& [k, v] : r.report.config) std::cout << "  " << k << " = " << v << "\n";
 }
 
-// The exact solver's answer in the penalty schemes' form, for one report.
-plate::SolveResult solve_exactly(Run& r, const plate::Problem& problem, plate::ExactResult& exact, plate::VectorXd& xi,
-                                 plate::Progress& progress) {
+// The exact solver's answer in the penalty schemes' form, for one report: on the part of the plate
+// the scene's mirror lines leave (unless --symmetry none), unfolded onto the whole plate.
+plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::VectorXd& xi, plate::Progress& progress) {
   using namespace plate;
   if (!progress.quiet()) r.exact_opt.on_iterate = [&](int cells, int iteration, int held, int changed) {
     const std::string grid = "grid " + std::to_string(cells) + " cells: ";
@@ -297,7 +319,8 @@ plate::SolveResult solve_exactly(Run& r, const plate::Problem& problem, plate::E
       progress.stage(grid + "active-set iteration " + std::to_string(iteration) + ", " + std::to_string(held) +
                      " rows held, " + std::to_string(changed) + " to change");
   };
-  exact = solve_exact(problem, r.phi, r.f, r.exact_opt);
+  scene = solve_exact_scene(r.g, r.spec, r.phi, r.f, r.exact_opt, r.use_mirrors);
+  const ExactResult& exact = scene.result;
   SolveResult result;
   result.w = exact.w;
   result.converged = exact.converged;
@@ -306,6 +329,9 @@ plate::SolveResult solve_exactly(Run& r, const plate::Problem& problem, plate::E
   xi = exact.lambda;
   r.report.certificate = &exact.certificate;
   r.report.certificate_tol = r.exact_opt.tol;
+  r.report.model = describe(scene.mirrors);
+  r.report.model_unknowns = scene.solved.grid.unknowns();
+  r.report.refinement = exact.levels.back().refinement;
   return result;
 }
 
@@ -340,22 +366,29 @@ plate::SolveResult solve_penalty(Run& r, const plate::Problem& problem, double L
 int solve_and_write(const Options& o, Run& r, plate::Clock::time_point t0) {
   using namespace plate;
   Progress progress("plate", o.quiet);
-  progress.stage("assembling " + std::to_string(r.g.unknowns()) + " unknowns");
-  const Problem problem = make_problem(r.g, r.spec, r.phi, r.f);
-  r.report.seconds_assemble = seconds_since(t0);
-  progress.stage("assembled; solving (" + o.scheme + " scheme, " + o.sampling + " sampling)");
   // Scale-free penalty: eps in units of L^4 (the stiffness K ~ L^-2 against eps^-1 M ~ L^2 / eps),
   // OS relative to the size of the answer. On the unit square eps is unchanged.
-  const double L4 = std::pow(r.g.lx(), 4), scale = r.exact ? 1.0 : answer_scale(problem);
+  const double L4 = std::pow(r.g.lx(), 4);
   r.opt.eps_start *= L4;
   r.opt.eps_min *= L4;
   r.opt.eps_unit = L4;
   r.report.eps_unit = L4;
-  r.opt.tol *= scale;
-  ExactResult exact_result;
+  SceneSolution scene;
+  std::optional<Problem> penalised;
   VectorXd xi;
-  SolveResult result = r.exact ? solve_exactly(r, problem, exact_result, xi, progress)
-                               : solve_penalty(r, problem, L4, xi, progress);
+  SolveResult result;
+  if (r.exact) {
+    progress.stage("solving (exact scheme, " + o.sampling + " sampling)");
+    result = solve_exactly(r, scene, xi, progress);
+  } else {
+    progress.stage("assembling " + std::to_string(r.g.unknowns()) + " unknowns");
+    penalised = make_problem(r.g, r.spec, r.phi, r.f);
+    r.report.seconds_assemble = seconds_since(t0);
+    progress.stage("assembled; solving (" + o.scheme + " scheme, " + o.sampling + " sampling)");
+    r.opt.tol *= answer_scale(*penalised);
+    result = solve_penalty(r, *penalised, L4, xi, progress);
+  }
+  const Problem& problem = r.exact ? scene.whole() : *penalised;
   progress.stage(result.converged ? "solved; writing the outputs" : "not converged; writing the outputs");
   const NodalFields nodes = nodal_fields(problem, result.w, r.phi, xi, o.nu);
   r.report.xi = xi;
@@ -384,7 +417,7 @@ int solve_and_write(const Options& o, Run& r, plate::Clock::time_point t0) {
 int solve_semi_analytic(const CLI::App& app, const Options& o, plate::Clock::time_point t0) {
   using namespace plate;
   for (const CLI::Option* opt : {o.n_opt, o.sampling_opt, o.edge_opt, o.edge_rows_opt, o.csv_opt, o.eps_opt, o.eps_start_opt,
-                                 o.eps_min_opt, o.tol_opt, o.max_iter_opt})
+                                 o.eps_min_opt, o.tol_opt, o.max_iter_opt, o.symmetry_opt})
     if (opt->count())
       throw std::invalid_argument(opt->get_name() + " has no meaning for --scheme semi-analytic (no grid, no eps)");
   if (o.rate || o.no_globalise || o.no_nested)

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "contraction.hpp"
+#include "format.hpp"
 
 namespace plate {
 
@@ -59,6 +60,21 @@ std::string nodal_csv(const NodalFields& f) {
 
 std::string line_force_csv(const Problem& p, const LineForce& f) {
   std::ostringstream o;
+  if (f.spline_degree > 0) {  // a function of the angle (D25): its values at fixed angles, comparable across grids
+    const int angles = kLineCsvAngles;
+    const double r = f.length / (2 * M_PI);
+    const double cx = p.sampling.edge.x[0] - r * std::cos(f.theta[0]), cy = p.sampling.edge.y[0] - r * std::sin(f.theta[0]);
+    o << "# plate: the contact force per unit length q on the rim, the spline of the edge rows' multipliers (degree "
+      << f.spline_degree << ", " << f.coefficients.size() << " knots), at " << angles
+      << " equally spaced angles theta about the circle's centre\n"
+         "theta,x,y,q\n";
+    for (int k = 0; k < angles; ++k) {
+      const double t = 2 * M_PI * k / angles;
+      o << csv_num(t) << ',' << csv_num(cx + r * std::cos(t)) << ',' << csv_num(cy + r * std::sin(t)) << ','
+        << csv_num(line_force_value(f, t)) << '\n';
+    }
+    return o.str();
+  }
   o << "# plate: the contact force per unit length q at the points on the obstacle's edge (theta: angle about\n"
        "# the circle's centre, empty for a polygon), and the weight (arc length) each point stands for\n"
        "theta,x,y,weight,q\n";
@@ -87,13 +103,14 @@ Json numbers(const std::vector<double>& v) {
 
 Json line_force_json(const LineForce& f) {
   if (f.empty()) return nullptr;
-  Json j = {{"points", f.q.size()}, {"length", number(f.length)}, {"total", number(f.total)},
+  Json j = {{"rows", f.q.size()}, {"rows_are", f.spline_degree > 0 ? "spline knots" : "points"},
+            {"length", number(f.length)}, {"total", number(f.total)},
             {"mean", number(f.mean)}, {"min", number(f.min)}, {"max", number(f.max)}};
   if (!f.theta.empty()) {
     j["q_fit_theta_0"] = number(line_force_fit(f, 0));
     j["q_fit_theta_pi_4"] = number(line_force_fit(f, M_PI / 4));
-    j["q_point_theta_0"] = number(line_force_at(f, 0));
-    j["q_point_theta_pi_4"] = number(line_force_at(f, M_PI / 4));
+    j["q_theta_0"] = number(line_force_value(f, 0));  // the spline's value, or the nearest point's
+    j["q_theta_pi_4"] = number(line_force_value(f, M_PI / 4));
   }
   j["fourier_cos_4k_theta"] = numbers(f.fourier);
   j["theta"] = numbers(f.theta);
@@ -141,6 +158,7 @@ std::string summary_json(const Report& r) {
   for (const auto& [k, v] : r.config) j["config"][k] = v;
   j["grid"] = {{"nx", p.grid.nx}, {"ny", p.grid.ny}, {"h", number(p.grid.h)}, {"unknowns", p.grid.unknowns()},
                {"sample_points", p.sampling.size()}};
+  j["model"] = {{"part", r.model}, {"unknowns", r.model_unknowns > 0 ? r.model_unknowns : p.grid.unknowns()}};
   j["converged"] = s.converged;
   j["message"] = s.message;
   j["eps_final"] = number(s.eps / r.eps_unit);
@@ -159,6 +177,7 @@ std::string summary_json(const Report& r) {
   j["line_force"] = line_force_json(r.line);
   j["constraint_violation"] = number((p.phi - p.sampling.S * s.w).cwiseMax(0.0).maxCoeff());
   check_json(j, r);
+  j["refinement"] = numbers(r.refinement);
   j["contact_nodes"] = Json::array();
   for (int k : e.contact) j["contact_nodes"].push_back({number(f.x[k]), number(f.y[k])});
   if (r.lambda1h > 0)
@@ -177,6 +196,9 @@ std::string summary_text(const Report& r) {
   const VectorXd& xi = r.xi;
   std::ostringstream o;
   o << (s.converged ? "converged" : "NOT CONVERGED: " + s.message) << "\n";
+  o << "solved on: " << r.model;
+  if (r.model_unknowns > 0) o << ", " << r.model_unknowns << " unknowns";
+  o << "\n";
   if (!s.levels.empty()) {
     o << "levels (eps: iterations):";
     for (const auto& l : s.levels) o << " " << num(l.eps / r.eps_unit) << ":" << l.iterations;
@@ -191,11 +213,12 @@ std::string summary_text(const Report& r) {
     << "\n";
   if (!r.line.empty()) {
     const LineForce& l = r.line;
-    o << "line load on the edge (" << l.q.size() << " points): mean " << num(l.mean) << " (total " << num(l.total)
+    o << "line load on the edge (" << l.q.size() << (l.spline_degree > 0 ? " spline knots" : " points") << "): mean " << num(l.mean) << " (total " << num(l.total)
       << " over length " << num(l.length) << "), min " << num(l.min) << ", max " << num(l.max);
     if (!l.theta.empty())
       o << "; fitted q(0) = " << num(line_force_fit(l, 0)) << ", q(pi/4) = " << num(line_force_fit(l, M_PI / 4))
-        << " (points: " << num(line_force_at(l, 0)) << ", " << num(line_force_at(l, M_PI / 4)) << ")";
+        << (l.spline_degree > 0 ? " (the spline: " : " (points: ") << num(line_force_value(l, 0)) << ", "
+        << num(line_force_value(l, M_PI / 4)) << ")";
     o << "\n";
     if (!l.fourier.empty()) {
       o << "  fit q(theta) ~";
@@ -209,6 +232,11 @@ std::string summary_text(const Report& r) {
       << num(c.negative_multiplier) << ", complementarity " << num(c.complementarity) << ", stationarity "
       << num(c.stationarity) << (c.worst() <= r.certificate_tol ? " (all <= " : " (NOT all <= ")
       << num(r.certificate_tol) << ")\n";
+    if (!r.refinement.empty()) {
+      o << "refinement (long-double residual), relative size of each correction:";
+      for (double c : r.refinement) o << " " << fmt("%.1e", c);
+      o << "\n";
+    }
   }
   if (!r.certificate)
     o << "error bound from the residual of (2a): max |w - w_eps| <= " << num(s.bound.bound) << " (round-off floor "

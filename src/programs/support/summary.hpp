@@ -24,7 +24,13 @@ struct Report {
   double lambda1h = -1;                           // < 0: not computed
   double seconds_assemble = 0, seconds_total = 0;
   double eps_unit = 1;  // eps is printed divided by this, in the user's unit (plate: lx^4)
+  std::string model = "whole plate";  // the part of the plate solved (mirror.hpp)
+  int model_unknowns = 0;             // its unknowns; 0: the whole grid's
+  std::vector<double> refinement;     // the exact solve's refinement steps, each correction's relative size
 };
+
+// The angles at which --line-csv gives a spline line load (and the semi-analytic scheme its own).
+constexpr int kLineCsvAngles = 720;
 
 std::string nodal_csv(const NodalFields& f);
 std::string line_force_csv(const Problem& p, const LineForce& f);

@@ -1,0 +1,91 @@
+// Element-by-element residuals in long double, and the refinement they drive.
+#include "refinement.hpp"
+
+#include <cfloat>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "bfs_element.hpp"
+
+namespace plate {
+
+using Extended = long double;
+
+// @region extended-residual
+// Eq. (D26): the residual with K never assembled: each element's K_e w_e in long double.
+VectorXd extended_residual(const Problem& p, const VectorXd& w, const VectorXd& mu) {
+  const Grid& g = p.grid;
+  const Eigen::Matrix<Extended, 16, 16> Ke = bfs_stiffness_extended(static_cast<Extended>(g.h));
+  std::vector<Extended> r(p.F.data(), p.F.data() + p.F.size());
+  for (int q = 0; q < mu.size(); ++q)
+    if (mu[q] != 0)
+      for (RowSpMat::InnerIterator it(p.sampling.S, q); it; ++it) r[it.col()] += static_cast<Extended>(it.value()) * mu[q];
+  Eigen::Matrix<Extended, 16, 1> we;
+  for (int ey = 0; ey < g.ny; ++ey)
+    for (int ex = 0; ex < g.nx; ++ex) {
+      const auto dofs = g.element_dofs(ex, ey);
+      for (int k = 0; k < 16; ++k) we[k] = dofs[k] >= 0 ? static_cast<Extended>(w[dofs[k]]) : 0;
+      const Eigen::Matrix<Extended, 16, 1> f = Ke * we;
+      for (int k = 0; k < 16; ++k)
+        if (dofs[k] >= 0) r[dofs[k]] -= f[k];
+    }
+  VectorXd out(r.size());
+  for (size_t i = 0; i < r.size(); ++i) out[i] = static_cast<double>(r[i]);
+  return out;
+}
+// @end extended-residual
+
+VectorXd extended_gap(const Problem& p, const VectorXd& w, const std::vector<int>& rows) {
+  VectorXd gap(rows.size());
+  for (size_t i = 0; i < rows.size(); ++i) {
+    Extended s = p.phi[rows[i]];
+    for (RowSpMat::InnerIterator it(p.sampling.S, rows[i]); it; ++it) s -= static_cast<Extended>(it.value()) * w[it.col()];
+    gap[i] = static_cast<double>(s);
+  }
+  return gap;
+}
+
+// @region refinement
+// Eq. (D27): with the residuals in long double (D26), the double factor of K and a factor of G_AA,
+//   z = K^{-1} r_w,   G_AA dmu = r_A - S_A z,   dw = z + K^{-1} S_A^T dmu.
+// Each step shrinks the error by about u cond(K) (some 1e-5 on n = 512).
+std::vector<double> refine(const Problem& p, const Cholesky& chol, const std::vector<int>& rows,
+                           const Eigen::MatrixXd& G_AA, VectorXd& mu, VectorXd& w) {
+  const int m = static_cast<int>(rows.size());
+  const Eigen::LDLT<Eigen::MatrixXd> factor(G_AA);
+  const RowSpMat& S = p.sampling.S;
+  std::vector<double> sizes;
+  for (int step = 0; step < 8; ++step) {
+    VectorXd force_at_rows = VectorXd::Zero(p.sampling.size());
+    for (int i = 0; i < m; ++i) force_at_rows[rows[i]] = mu[i];
+    const VectorXd z = chol.solve(extended_residual(p, w, force_at_rows));
+    VectorXd dw = z, dmu;
+    if (m > 0) {
+      VectorXd rhs = extended_gap(p, w, rows);
+      for (int i = 0; i < m; ++i) rhs[i] -= S.row(rows[i]).dot(z);
+      dmu = factor.solve(rhs);
+      VectorXd push = VectorXd::Zero(p.grid.unknowns());  // S_A^T dmu
+      for (int i = 0; i < m; ++i)
+        for (RowSpMat::InnerIterator it(S, rows[i]); it; ++it) push[it.col()] += dmu[i] * it.value();
+      dw += chol.solve(push);
+    }
+    const double size = dw.lpNorm<Eigen::Infinity>() / std::max(w.lpNorm<Eigen::Infinity>(), 1e-300);
+    if (!sizes.empty() && !(size < sizes.back())) break;  // no longer shrinking: the residual's own round-off
+    w += dw;
+    if (m > 0) mu += dmu;
+    sizes.push_back(size);
+    if (size <= 4 * DBL_EPSILON) break;
+  }
+  return sizes;
+}
+// @end refinement
+
+VectorXd solve_refined(const Problem& p, const Cholesky& chol, std::vector<double>* corrections) {
+  VectorXd w = chol.solve(p.F), none;
+  const std::vector<double> sizes = refine(p, chol, {}, Eigen::MatrixXd(), none, w);
+  if (corrections) *corrections = sizes;
+  return w;
+}
+
+}  // namespace plate

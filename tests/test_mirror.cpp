@@ -1,0 +1,126 @@
+// Symmetry as a model choice (mirror.hpp): a scene with mirror lines is solved on the half or
+// quarter of the plate they leave, and the answer, unfolded, is the whole plate's discrete answer.
+// Each test solves both ways and compares; the whole plate is the independent side.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "active_set.hpp"
+#include "contact.hpp"
+#include "fields.hpp"
+#include "line_force.hpp"
+#include "norms.hpp"
+#include "paper_case.hpp"
+
+using namespace plate;
+
+namespace {
+const Field kNoLoad = [](double, double) { return 0.0; };
+
+struct Both {
+  SceneSolution whole, part;
+};
+
+// The scene solved on the whole plate and on the part its mirrors leave; both certified.
+Both solve_both(const Grid& g, const SamplingSpec& spec, const Field& phi, const Field& f) {
+  Both b{solve_exact_scene(g, spec, phi, f, ExactOptions{}, false), solve_exact_scene(g, spec, phi, f, ExactOptions{}, true)};
+  EXPECT_TRUE(b.whole.result.converged) << b.whole.result.message;
+  EXPECT_TRUE(b.part.result.converged) << b.part.result.message;
+  EXPECT_FALSE(b.whole.mirrors.any());
+  return b;
+}
+
+// The largest differences of w, the force densities and the total force, each relative to its size.
+void expect_same(const Both& b, double tol) {
+  const VectorXd &w1 = b.whole.result.w, &w2 = b.part.result.w, &l1 = b.whole.result.lambda, &l2 = b.part.result.lambda;
+  ASSERT_EQ(w1.size(), w2.size());
+  ASSERT_EQ(l1.size(), l2.size());
+  EXPECT_LE((w1 - w2).lpNorm<Eigen::Infinity>(), tol * w1.lpNorm<Eigen::Infinity>());
+  EXPECT_LE((l1 - l2).lpNorm<Eigen::Infinity>(), tol * l1.lpNorm<Eigen::Infinity>());
+  const double f1 = total_contact_force(b.whole.whole(), l1), f2 = total_contact_force(b.part.whole(), l2);
+  EXPECT_NEAR(f1, f2, tol * std::abs(f1));
+}
+}  // namespace
+
+// The paper's scene has both mirror lines: a quarter, the same answer to the refinement's precision,
+// for the default edge rows, point rows and Gauss points.
+TEST(Mirror, QuarterAndWholePlateGiveOneAnswerOnThePapersScene) {
+  const PaperScene& s = paper_scene();
+  for (const SamplingSpec& spec : {SamplingSpec{SamplingKind::Edge, s.rim()}, SamplingSpec{SamplingKind::Edge, s.rim(), EdgeRows::points()},
+                                   SamplingSpec{SamplingKind::Gauss}}) {
+    const Both b = solve_both(make_grid(64), spec, s.obstacle(), kNoLoad);
+    EXPECT_TRUE(b.part.mirrors.x && b.part.mirrors.y) << describe(b.part.mirrors);
+    EXPECT_EQ(b.part.solved.grid.unknowns(), 4 * 32 * 32);
+    expect_same(b, 1e-10);
+    // Whole-plate quantities: the line load all round, by the square's symmetry.
+    if (spec.kind == SamplingKind::Edge) {
+      const LineForce q1 = line_force(b.whole.whole(), b.whole.result.lambda), q2 = line_force(b.part.whole(), b.part.result.lambda);
+      ASSERT_EQ(q1.q.size(), q2.q.size());
+      for (size_t k = 0; k < q1.q.size(); ++k) EXPECT_NEAR(q1.q[k], q2.q[k], 1e-9 * q1.max);
+    }
+  }
+}
+
+// A rectangle with a centred cylinder: the two mirrors of a rectangle, not the square's eight.
+TEST(Mirror, RectangleWithACentredCylinderIsSolvedOnAQuarter) {
+  const Grid g = make_grid(48, 1.5, 1.0);
+  const Field phi = cylinder(0.75, 0.5, 0.3, 0.05);
+  const Both b = solve_both(g, SamplingSpec{SamplingKind::Edge, circle_edge(0.75, 0.5, 0.3)}, phi, kNoLoad);
+  EXPECT_TRUE(b.part.mirrors.x && b.part.mirrors.y);
+  expect_same(b, 1e-10);
+}
+
+// An expression obstacle and load, symmetric in both lines, with nodal sampling (the primal-dual
+// solver, not refined: agreement to its round-off on this grid) and Gauss points.
+TEST(Mirror, SymmetricExpressionObstacleIsSolvedOnAQuarter) {
+  const Field phi = expression("--obstacle", "0.02 - 2*((x-0.5)^2 + (y-0.5)^2)");
+  const Field load = expression("--load", "-1 - x*(1-x)");
+  for (SamplingKind kind : {SamplingKind::Nodes, SamplingKind::Gauss}) {
+    const Both b = solve_both(make_grid(16), SamplingSpec{kind}, phi, load);
+    EXPECT_TRUE(b.part.mirrors.x && b.part.mirrors.y) << to_string(kind);
+    expect_same(b, 1e-11);
+  }
+}
+
+// A cylinder moved along x keeps the mirror y = 1/2 only: a half. Moved off both lines: the whole plate.
+TEST(Mirror, APartialSymmetryGivesAHalfAndNoneTheWholePlate) {
+  const Field phi_half = cylinder(0.4, 0.5, 0.25, 0.0625);
+  const Both b = solve_both(make_grid(32), SamplingSpec{SamplingKind::Edge, circle_edge(0.4, 0.5, 0.25)}, phi_half, kNoLoad);
+  EXPECT_FALSE(b.part.mirrors.x);
+  EXPECT_TRUE(b.part.mirrors.y);
+  EXPECT_EQ(b.part.solved.grid.unknowns(), 4 * 31 * 16);
+  expect_same(b, 1e-10);
+  const Field phi_off = cylinder(0.4, 0.55, 0.25, 0.0625);
+  const SceneSolution off = solve_exact_scene(make_grid(32), SamplingSpec{SamplingKind::Edge, circle_edge(0.4, 0.55, 0.25)}, phi_off, kNoLoad,
+                                              ExactOptions{});
+  EXPECT_FALSE(off.mirrors.any());
+  EXPECT_FALSE(off.unfolded.has_value());
+}
+
+// What breaks a mirror: an odd number of cells (the line is not a grid line), a load that is not
+// symmetric, an obstacle that differs from its image by more than round-off.
+TEST(Mirror, MirrorsAreFoundOnlyWhereTheSceneHasThem) {
+  const PaperScene& s = paper_scene();
+  const SamplingSpec edge{SamplingKind::Edge, s.rim()};
+  EXPECT_FALSE(find_mirrors(make_grid(15), edge, s.obstacle(), kNoLoad).any());
+  const Mirrors tilted = find_mirrors(make_grid(16), edge, s.obstacle(), [](double x, double) { return x; });
+  EXPECT_FALSE(tilted.x);
+  EXPECT_TRUE(tilted.y);
+  const Field bumpy = [](double x, double y) { return 0.01 - (x - 0.5) * (x - 0.5) - (y - 0.5) * (y - 0.5) + 1e-9 * x; };
+  EXPECT_FALSE(find_mirrors(make_grid(16), SamplingSpec{SamplingKind::Nodes}, bumpy, kNoLoad).x);
+  const Field rounded = [](double x, double y) { return 0.01 - (x - 0.5) * (x - 0.5) - (y - 0.5) * (y - 0.5) + 1e-16 * x; };
+  EXPECT_TRUE(find_mirrors(make_grid(16), SamplingSpec{SamplingKind::Nodes}, rounded, kNoLoad).x);
+}
+
+// A point of the whole plate is evaluated on the part by reflection, slopes across the line
+// changing sign: the unfolded plate and the part agree everywhere.
+TEST(Mirror, EvaluationBeyondTheMirrorLineReflects) {
+  const PaperScene& s = paper_scene();
+  const SceneSolution x = solve_exact_scene(make_grid(32), SamplingSpec{SamplingKind::Edge, s.rim()}, s.obstacle(), kNoLoad, ExactOptions{});
+  ASSERT_TRUE(x.mirrors.x && x.mirrors.y);
+  for (const auto& [px, py] : {std::pair{0.7, 0.3}, {0.2, 0.9}, {0.81, 0.77}, {0.5, 0.6}}) {
+    const PointValues a = evaluate(x.whole().grid, x.result.w, px, py), b = evaluate(x.solved.grid, x.part_w, px, py);
+    for (auto [u, v] : {std::pair{a.w, b.w}, {a.wx, b.wx}, {a.wy, b.wy}, {a.wxx, b.wxx}, {a.wxy, b.wxy}, {a.wyy, b.wyy}})
+      EXPECT_NEAR(u, v, 1e-12 * (1 + std::abs(u))) << px << ", " << py;
+  }
+}
