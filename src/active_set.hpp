@@ -13,6 +13,7 @@
 #include "fixed_set.hpp"
 #include "mirror.hpp"
 #include "problem.hpp"
+#include "refinement.hpp"
 
 namespace plate {
 
@@ -53,7 +54,7 @@ struct ExactLevel {
   int primal_steps = 0;        // steps of the monotone fallback (0 unless it was needed)
   int factorizations = 0;
   long correction_columns = 0; // solves spent on small active-set changes
-  std::vector<double> refinement;  // dual solver: size of each refinement step, max |dw| / max |w| (D27)
+  Refinement refinement;       // dual solver: the refinement's corrections (D27); empty if not refined
   double seconds = 0;
 };
 

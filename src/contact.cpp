@@ -74,6 +74,17 @@ double penalty_backward_error(const Problem& p, const VectorXd& w, double eps) {
   return scale > 0 ? r.lpNorm<Eigen::Infinity>() / scale : r.lpNorm<Eigen::Infinity>();
 }
 
+double dip_below_edge(const Problem& p, const VectorXd& w, const Field& obstacle) {
+  if (!has_edge(p.spec.kind) || p.spec.edge.empty()) return NAN;
+  const EdgePoints e = edge_points(p.spec.edge, p.grid.h / 8);
+  double dip = 0;
+  for (int k = 0; k < e.size(); ++k) {
+    const double phi = obstacle_on_edge(obstacle, e.x[k], e.y[k], e.nx[k], e.ny[k], p.grid.h);
+    if (std::isfinite(phi)) dip = std::max(dip, phi - evaluate(p.grid, w, e.x[k], e.y[k]).w);
+  }
+  return dip;
+}
+
 NodalFields nodal_fields(const Problem& p, const VectorXd& w, const Field& obstacle, double eps, double nu) {
   return nodal_fields(p, w, obstacle, contact_force_density(p, w, eps), nu);
 }

@@ -39,6 +39,11 @@ double penalty_residual(const Problem& p, const VectorXd& w, double eps);
 // exact w_eps, on every grid: a quantity whose digits below ~1e-13 round-off alone decides.
 double penalty_backward_error(const Problem& p, const VectorXd& w, double eps);
 
+// How far the plate dips below the obstacle along its edge curve between the rows that constrain it
+// (spline rows average w, point rows hold it at points): max over points h / 8 apart on the curve of
+// phi - w_h, 0 if the plate is nowhere below. NaN without an edge curve.
+double dip_below_edge(const Problem& p, const VectorXd& w, const Field& obstacle);
+
 // Everything the paper reports "at the nodes of the grid", at all (nx+1)(ny+1) nodes.
 // Second derivatives jump across element edges; at a node we average the elements around it.
 // The contact force at node r is (S^T W xi)_r / h^2, the force on its value unknown per unit

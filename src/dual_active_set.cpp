@@ -62,7 +62,7 @@ std::vector<int> violated_rows(const VectorXd& gap, const NodeSet& in_schur, dou
 }
 
 // The refinement (D27) of the answer on the rows that push.
-std::vector<double> refine_held(const Problem& p, const Cholesky& chol, const Schur& schur, VectorXd& mu, VectorXd& w) {
+Refinement refine_held(const Problem& p, const Cholesky& chol, const Schur& schur, VectorXd& mu, VectorXd& w) {
   std::vector<int> held, rows;  // positions in G, and their sample rows
   for (int i = 0; i < mu.size(); ++i)
     if (mu[i] > 0) held.push_back(i), rows.push_back(schur.rows[i]);
@@ -73,7 +73,7 @@ std::vector<double> refine_held(const Problem& p, const Cholesky& chol, const Sc
     mu_A[i] = mu[held[i]];
     for (int k = 0; k < m; ++k) G_AA(i, k) = schur.G(held[i], held[k]);
   }
-  const std::vector<double> sizes = refine(p, chol, rows, G_AA, mu_A, w);
+  const Refinement sizes = refine(p, chol, rows, G_AA, mu_A, w);
   for (int i = 0; i < m; ++i) mu[held[i]] = mu_A[i];
   return sizes;
 }

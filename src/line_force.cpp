@@ -52,6 +52,10 @@ LineForce line_force(const Problem& p, const VectorXd& lambda, int harmonics) {
     f.total += s.weights[row] * lambda[row];
   }
   summarise(f);
+  for (int k = 0; f.spline_degree > 0 && k < 720; ++k) {  // a function: its extremes between the knots too
+    const double q = line_force_value(f, 2 * M_PI * k / 720);
+    f.min = std::min(f.min, q), f.max = std::max(f.max, q);
+  }
   fit_harmonics(f, harmonics);
   return f;
 }
@@ -106,6 +110,17 @@ double line_force_value(const LineForce& f, double theta) {
   double q = 0;
   for (int j = first; j <= first + p + 2; ++j) q += f.coefficients[((j % m) + m) % m] * cardinal_bspline(p, u - j);
   return q;
+}
+
+double max_distance(const LineForce& f, const std::function<double(double)>& reference, int angles) {
+  if (f.theta.size() != f.q.size() || f.q.empty()) return NAN;
+  double d = 0;
+  for (size_t k = 0; k < f.q.size(); ++k) d = std::max(d, std::abs(f.q[k] - reference(f.theta[k])));
+  for (int k = 0; f.spline_degree > 0 && k < angles; ++k) {
+    const double t = 2 * M_PI * k / angles;
+    d = std::max(d, std::abs(line_force_value(f, t) - reference(t)));
+  }
+  return d;
 }
 
 double line_force_fit(const LineForce& f, double theta) {

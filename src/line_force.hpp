@@ -2,6 +2,7 @@
 // With edge sampling the multiplier at an edge point is a force per unit length, so q(theta) is
 // read off directly, and its total over the rim is the obstacle's whole push on the plate.
 #pragma once
+#include <functional>
 #include <vector>
 
 #include "problem.hpp"
@@ -48,6 +49,9 @@ LineForce binned_line_force(const Problem& p, const VectorXd& lambda, const Edge
 double line_force_at(const LineForce& f, double theta);
 // The line load at any angle: the spline's value (D25), or for point rows the nearest point's.
 double line_force_value(const LineForce& f, double theta);
+// The largest distance of the line load from a reference q(theta): for spline rows over `angles`
+// equal angles and the knots, for point rows at the points. NaN without angles (a polygon).
+double max_distance(const LineForce& f, const std::function<double(double)>& reference, int angles = 720);
 // The fitted (smoothed) line load sum_k a_k cos(4 k theta); NaN without a fit.
 double line_force_fit(const LineForce& f, double theta);
 

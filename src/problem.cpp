@@ -39,20 +39,24 @@ void check_obstacle_on_boundary(const Grid& g, const Field& obstacle) {
   if (g.mirror_x) check(g.lx(), 0.0);  // the bottom edge's far end, which the right edge's loop no longer visits
 }
 
+double obstacle_on_edge(const Field& obstacle, double x, double y, double nx, double ny, double h) {
+  const double d = 1e-9 * h;
+  double v = obstacle(x, y);
+  for (double side : {-1.0, 1.0}) {
+    const double u = obstacle(x + side * d * nx, y + side * d * ny);
+    if (std::isnan(u)) return u;
+    v = std::max(v, u);
+  }
+  return v;
+}
+
 namespace {
 // @region edge-envelope
 // The obstacle on its own edge: the largest value on either side of the curve. The cylinder is
 // discontinuous exactly there, and the constraint a rigid body imposes is its upper
 // semicontinuous envelope (the closed disk), whatever side rounding puts the point on.
 double on_edge(const Field& obstacle, const EdgePoints& e, int k, double h) {
-  const double d = 1e-9 * h;
-  double v = obstacle(e.x[k], e.y[k]);
-  for (double side : {-1.0, 1.0}) {
-    const double u = obstacle(e.x[k] + side * d * e.nx[k], e.y[k] + side * d * e.ny[k]);
-    if (std::isnan(u)) return u;
-    v = std::max(v, u);
-  }
-  return v;
+  return obstacle_on_edge(obstacle, e.x[k], e.y[k], e.nx[k], e.ny[k], h);
 }
 // @end edge-envelope
 

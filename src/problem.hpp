@@ -36,6 +36,10 @@ Problem make_samples(const Grid& g, const SamplingSpec& spec, const Field& obsta
 // The same without an edge curve.
 Problem make_problem(const Grid& g, SamplingKind kind, const Field& obstacle, const Field& load);
 
+// The obstacle at a point (x, y) of its edge curve with normal (nx, ny): the largest value on the
+// curve and a hair's breadth (1e-9 h) to either side, its upper semicontinuous envelope there.
+double obstacle_on_edge(const Field& obstacle, double x, double y, double nx, double ny, double h);
+
 // Samples phi along the clamped edges (every node and 8 points per cell edge) and throws
 // std::invalid_argument if phi >= 0 or NaN at any of them. A mirror edge is not checked.
 void check_obstacle_on_boundary(const Grid& g, const Field& obstacle);

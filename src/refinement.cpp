@@ -50,12 +50,12 @@ VectorXd extended_gap(const Problem& p, const VectorXd& w, const std::vector<int
 // Eq. (D27): with the residuals in long double (D26), the double factor of K and a factor of G_AA,
 //   z = K^{-1} r_w,   G_AA dmu = r_A - S_A z,   dw = z + K^{-1} S_A^T dmu.
 // Each step shrinks the error by about u cond(K) (some 1e-5 on n = 512).
-std::vector<double> refine(const Problem& p, const Cholesky& chol, const std::vector<int>& rows,
-                           const Eigen::MatrixXd& G_AA, VectorXd& mu, VectorXd& w) {
+Refinement refine(const Problem& p, const Cholesky& chol, const std::vector<int>& rows, const Eigen::MatrixXd& G_AA,
+                  VectorXd& mu, VectorXd& w) {
   const int m = static_cast<int>(rows.size());
   const Eigen::LDLT<Eigen::MatrixXd> factor(G_AA);
   const RowSpMat& S = p.sampling.S;
-  std::vector<double> sizes;
+  Refinement sizes;
   for (int step = 0; step < 8; ++step) {
     VectorXd force_at_rows = VectorXd::Zero(p.sampling.size());
     for (int i = 0; i < m; ++i) force_at_rows[rows[i]] = mu[i];
@@ -71,20 +71,22 @@ std::vector<double> refine(const Problem& p, const Cholesky& chol, const std::ve
       dw += chol.solve(push);
     }
     const double size = dw.lpNorm<Eigen::Infinity>() / std::max(w.lpNorm<Eigen::Infinity>(), 1e-300);
-    if (!sizes.empty() && !(size < sizes.back())) break;  // no longer shrinking: the residual's own round-off
+    const double size_mu = m > 0 ? dmu.lpNorm<Eigen::Infinity>() / std::max(mu.lpNorm<Eigen::Infinity>(), 1e-300) : 0.0;
+    const bool shrinking = sizes.w.empty() || size < sizes.w.back();
+    sizes.w.push_back(size), sizes.mu.push_back(size_mu);
+    if (!shrinking) break;  // the residual's own round-off: this correction is noise, not applied
     w += dw;
     if (m > 0) mu += dmu;
-    sizes.push_back(size);
     if (size <= 4 * DBL_EPSILON) break;
   }
   return sizes;
 }
 // @end refinement
 
-VectorXd solve_refined(const Problem& p, const Cholesky& chol, std::vector<double>* corrections) {
+VectorXd solve_refined(const Problem& p, const Cholesky& chol, Refinement* record) {
   VectorXd w = chol.solve(p.F), none;
-  const std::vector<double> sizes = refine(p, chol, {}, Eigen::MatrixXd(), none, w);
-  if (corrections) *corrections = sizes;
+  const Refinement sizes = refine(p, chol, {}, Eigen::MatrixXd(), none, w);
+  if (record) *record = sizes;
   return w;
 }
 

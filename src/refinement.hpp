@@ -8,6 +8,7 @@
 // solve: here element by element, with the element stiffness and every sum in long double (64-bit
 // significand), so the rounded K never enters.
 #pragma once
+#include <cmath>
 #include <vector>
 
 #include "cholesky.hpp"
@@ -21,14 +22,24 @@ VectorXd extended_residual(const Problem& p, const VectorXd& w, const VectorXd& 
 // phi_q - (S w)_q at the rows `rows`, each sum in long double.
 VectorXd extended_gap(const Problem& p, const VectorXd& w, const std::vector<int>& rows);
 
+// The size of each correction, relative: max |dw| / max |w| and max |dmu| / max |mu|. The last
+// entry is the correction that stopped the refinement (down to a few units of round-off, or no
+// longer shrinking: then it was not applied), so it is about what round-off still moves in w and mu
+// on any machine: the floor to which the refined answer is reproducible.
+struct Refinement {
+  std::vector<double> w, mu;
+  double floor_w() const { return w.empty() ? NAN : w.back(); }
+  double floor_mu() const { return mu.empty() ? NAN : mu.back(); }
+};
+
 // Eq. (D27): refines w and the forces mu on the rows `rows` (those that push; G_AA their block of
 // G = S K^{-1} S^T) so that K w - S_A^T mu = F and S_A w = phi_A hold to the residual's precision.
 // `chol` holds K's factor. Stops when a correction is down to a few units of round-off of w, or
-// stops shrinking; returns each correction's size, max |dw| / max |w|.
-std::vector<double> refine(const Problem& p, const Cholesky& chol, const std::vector<int>& rows,
-                           const Eigen::MatrixXd& G_AA, VectorXd& mu, VectorXd& w);
+// stops shrinking.
+Refinement refine(const Problem& p, const Cholesky& chol, const std::vector<int>& rows, const Eigen::MatrixXd& G_AA,
+                  VectorXd& mu, VectorXd& w);
 
 // The plate with no constraint, K w = F, refined: eq. (D27) with no rows.
-VectorXd solve_refined(const Problem& p, const Cholesky& chol, std::vector<double>* corrections = nullptr);
+VectorXd solve_refined(const Problem& p, const Cholesky& chol, Refinement* record = nullptr);
 
 }  // namespace plate

@@ -37,21 +37,25 @@ std::vector<double> SolutionRoundoff::of(const Eigen::MatrixXd& g) const {
   return out;
 }
 
-VectorXd SolutionRoundoff::point_value(double x, double y) const {
-  // w_h(x, y) is linear in the unknowns: its coefficients are the values of the basis functions there.
-  const Grid& g = p_.grid;
-  VectorXd coefficients = VectorXd::Zero(g.unknowns()), e = VectorXd::Zero(g.unknowns());
+namespace {
+// The coefficients of a linear output of w_h at (x, y): the values of the basis functions there.
+VectorXd coefficients_at(const Grid& g, double x, double y, double PointValues::*what) {
+  VectorXd c = VectorXd::Zero(g.unknowns()), e = VectorXd::Zero(g.unknowns());
   int ex, ey;
   double t, s;
   if (!g.locate(x, y, ex, ey, t, s)) throw std::invalid_argument("a point outside the plate has no round-off estimate");
   for (int dof : g.element_dofs(ex, ey)) {
     if (dof < 0) continue;
     e[dof] = 1;
-    coefficients[dof] = evaluate(g, e, x, y).w;
+    c[dof] = evaluate(g, e, x, y).*what;
     e[dof] = 0;
   }
-  return coefficients;
+  return c;
 }
+}  // namespace
+
+VectorXd SolutionRoundoff::point_value(double x, double y) const { return coefficients_at(p_.grid, x, y, &PointValues::w); }
+VectorXd SolutionRoundoff::point_twist(double x, double y) const { return coefficients_at(p_.grid, x, y, &PointValues::wxy); }
 
 VectorXd SolutionRoundoff::unknown(int dof) const {
   VectorXd e = VectorXd::Zero(p_.grid.unknowns());

@@ -28,6 +28,7 @@ class SolutionRoundoff {
   std::vector<double> of(const Eigen::MatrixXd& g) const;
   // The coefficient vector g of common outputs: w at a point, one unknown (a nodal value or slope).
   VectorXd point_value(double x, double y) const;
+  VectorXd point_twist(double x, double y) const;  // of w_xy at a point
   VectorXd unknown(int dof) const;
 
  private:

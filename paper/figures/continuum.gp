@@ -15,13 +15,15 @@ pick(s, col) = (strcol(1) eq s && column(col) > 0) ? column(col) : NaN
 set multiplot layout 1,2
 set title 'max w: relative error against the series'
 set ylabel 'relative error'
-plot data using 3:(pick('edge', 4)) with linespoints pt 7 lc 1 title 'edge', \
+plot data using 3:(pick('edge', 4)) with linespoints pt 7 lc 1 title 'edge (splines)', \
+     data using 3:(pick('edge-points', 4)) with linespoints pt 6 dt 2 lc 4 title 'edge (points)', \
      data using 3:(pick('gauss', 4)) with linespoints pt 5 lc 2 title 'Gauss', \
      data using 3:(pick('nodes', 4)) with linespoints pt 9 lc 3 title 'nodes', \
      [0.0015:0.15] 0.1 * x with lines dt 2 lc 0 title 'h', \
      [0.0015:0.15] 0.05 * x**3 with lines dt 3 lc 0 title 'h^3'
 set title 'total contact force: relative error against the series'
-plot data using 3:(pick('edge', 5)) with linespoints pt 7 lc 1 title 'edge', \
+plot data using 3:(pick('edge', 5)) with linespoints pt 7 lc 1 title 'edge (splines)', \
+     data using 3:(pick('edge-points', 5)) with linespoints pt 6 dt 2 lc 4 title 'edge (points)', \
      data using 3:(pick('gauss', 5)) with linespoints pt 5 lc 2 title 'Gauss', \
      data using 3:(pick('nodes', 5)) with linespoints pt 9 lc 3 title 'nodes', \
      [0.0015:0.15] 0.3 * x with lines dt 2 lc 0 title 'h', \

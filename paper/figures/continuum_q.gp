@@ -1,23 +1,30 @@
-# The line load q(theta) on the rim, from results/continuum_q.csv (written by build/continuum): the
-# multiplier at each rim point per unit length, edge sampling, on a quarter of the circle (the
-# square's symmetries give the rest), with the code's own fit a0 + a1 cos 4 theta + a2 cos 8 theta +
-# a3 cos 12 theta on the finest grid (column 4), so that the plot shows the fit the report uses.
+# The line load q(theta) on a quarter of the rim (the square's symmetries give the rest), from
+# results/continuum_q.csv (written by build/continuum). Left: the rim-contact series, the spline rows'
+# q on n = 128 and the point rows' values on the same grid, which scatter. Right: the spline rows'
+# distance from the series, over the mean load, on every grid from n = 32: it shrinks everywhere.
 # Usage: gnuplot -e "fmt='svg'; out='results/continuum_q.svg'" paper/figures/continuum_q.gp
-if (fmt eq 'svg') { set terminal svg size 900,480 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 900,480 font 'Helvetica,11' }
+if (fmt eq 'svg') { set terminal svg size 1000,430 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 1000,430 font 'Helvetica,11' }
 set output out
 set datafile separator ','
-set xlabel 'angle theta about the centre of the disk (0: towards the side x = 1)'
-set ylabel 'q, force per unit length'
-set xrange [0:pi/2]
-set xtics ('0' 0, 'pi/8' pi/8, 'pi/4' pi/4, '3pi/8' 3*pi/8, 'pi/2' pi/2)
-set grid
-set key outside bottom center horizontal box
-set fit quiet logfile '/dev/null'
 data = 'results/continuum_q.csv'
-stats data using 1 nooutput
-finest = int(STATS_max)
-coarsest = int(STATS_min)
-nblocks = STATS_blocks
-fine(col) = (column(1) == finest) ? column(col) : NaN
-plot for [b = 0:nblocks - 1] data index b using 2:3 with points pt 7 ps 0.5 title sprintf('n = %d', coarsest * 2**b), \
-     data using 2:(fine(4)) with lines lw 2 lc 0 title sprintf('fit sum a_k cos 4k theta on n = %d', finest)
+set xrange [0:pi/2]
+set xtics ('0' 0, 'π/8' pi/8, 'π/4' pi/4, '3π/8' 3*pi/8, 'π/2' pi/2)
+set xlabel 'angle θ about the centre of the disk'
+set grid
+is(s, n, col) = (strcol(1) eq s && column(2) == n) ? column(col) : NaN
+set multiplot layout 1,2
+set title 'q(θ) on n = 128'
+set ylabel 'force per unit length'
+set yrange [0:50]
+set key top right box opaque
+plot data using 3:(is('edge', 128, 5)) with lines lw 3 lc rgb '#bbbbbb' title 'series', \
+     data using 3:(is('edge-points', 128, 4)) with points pt 7 ps 0.6 lc 2 title 'point rows', \
+     data using 3:(is('edge', 128, 4)) with lines lw 1.5 lc 1 title 'spline rows'
+set title 'spline rows: |q - q_{series}| / mean'
+set ylabel ''
+set logscale y
+set format y '10^{%L}'
+set yrange [1e-7:1e2]
+set key top center horizontal maxcols 5 box opaque
+plot for [n in '32 64 128 256 512'] data using 3:(is('edge', n + 0, 6)) with lines lw 1.5 title 'n = '.n
+unset multiplot

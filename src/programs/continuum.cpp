@@ -26,16 +26,30 @@ using namespace plate;
 
 namespace {
 
+// The samplings compared: edge rows as the code's default (cubic splines of the angle, D25), edge
+// rows at points (the previous default, for comparison), and the paper's two readings of (8).
+struct Variant {
+  std::string name;
+  SamplingSpec spec;
+};
+std::vector<Variant> variants(const PaperScene& scene) {
+  return {{"edge", SamplingSpec{SamplingKind::Edge, scene.rim()}},
+          {"edge-points", SamplingSpec{SamplingKind::Edge, scene.rim(), EdgeRows::points()}},
+          {"gauss", SamplingSpec{SamplingKind::Gauss}},
+          {"nodes", SamplingSpec{SamplingKind::Nodes}}};
+}
+
 struct Row {
-  SamplingKind kind;
+  std::string kind;  // the variant's name
   int n = 0, unknowns = 0, samples = 0, edge_points = 0;
   bool certified = false;
   double max_w = 0, w_mid = 0, w_diag = 0, force = 0, mean_line = 0, q0 = NAN, q45 = NAN, m12 = 0, seconds = 0;
   LineForce line;
-  // What round-off may change in each of the above: the deflections and the moment as roundoff.hpp
-  // estimates; the forces, read off the multipliers, the worst case u n^3 (exact_solve_roundoff).
+  // What round-off may change in each of the above: for a refined solve, the refinement's floor;
+  // otherwise the deflections and the moment as roundoff.hpp estimates, and the forces, read off the
+  // multipliers, the worst case u n^3 (exact_solve_roundoff).
   double noise_max_w = 0, noise_w_mid = 0, noise_w_diag = 0, noise_force = 0, noise_mean_line = 0, noise_q0 = 0,
-         noise_q45 = 0, noise_m12 = 0;
+         noise_q45 = 0, noise_m12 = 0, noise_line = 0;
 };
 
 // The quantities a reader asks for, each with how it is read from a row.
@@ -51,54 +65,72 @@ const std::vector<Quantity> kQuantities = {
     {"w(0.25, 0.25)", "w_0.25_0.25", &Row::w_diag, &Row::noise_w_diag},
     {"total force", "total_force", &Row::force, &Row::noise_force},
     {"mean line force", "mean_line_force", &Row::mean_line, &Row::noise_mean_line},
-    {"fitted q(0)", "q_fit_theta_0", &Row::q0, &Row::noise_q0},
-    {"fitted q(pi/4)", "q_fit_theta_pi_4", &Row::q45, &Row::noise_q45},
+    {"q(0)", "q_theta_0", &Row::q0, &Row::noise_q0},
+    {"q(pi/4)", "q_theta_pi_4", &Row::q45, &Row::noise_q45},
     {"max m12", "max_abs_m12", &Row::m12, &Row::noise_m12},
 };
 
-Row solve_one(SamplingKind kind, int n, const PaperScene& scene) {
+Row solve_one(const Variant& v, int n, const PaperScene& scene) {
   const Field phi = scene.obstacle(), no_load = [](double, double) { return 0.0; };
   const auto t0 = Clock::now();
-  const Problem p = make_problem(make_grid(n), SamplingSpec{kind, scene.rim()}, phi, no_load);
-  const ExactResult x = solve_exact(p, phi, no_load, ExactOptions{});
+  const SceneSolution x = solve_exact_scene(make_grid(n), v.spec, phi, no_load, ExactOptions{});
+  const Problem& p = x.whole();
   Row row;
-  row.kind = kind, row.n = n, row.unknowns = p.grid.unknowns(), row.samples = p.sampling.size();
+  row.kind = v.name, row.n = n, row.unknowns = p.grid.unknowns(), row.samples = p.sampling.size();
   row.edge_points = p.sampling.edge_size();
-  row.certified = x.converged;
-  const NodalFields f = nodal_fields(p, x.w, phi, x.lambda, kPoissonRatio);
+  row.certified = x.result.converged;
+  const NodalFields f = nodal_fields(p, x.result.w, phi, x.result.lambda, kPoissonRatio);
   int top = 0, twist = 0;  // the nodes of max w and of max |m12|
   for (int k = 0; k < f.size(); ++k) {
     if (f.w[k] > f.w[top]) top = k;
     if (std::abs(f.m12[k]) > std::abs(f.m12[twist])) twist = k;
   }
   row.max_w = f.w[top], row.m12 = std::abs(f.m12[twist]);
-  row.w_mid = evaluate(p.grid, x.w, 0.5, 0.125).w;
-  row.w_diag = evaluate(p.grid, x.w, 0.25, 0.25).w;
-  row.force = total_contact_force(p, x.lambda);
+  row.w_mid = evaluate(p.grid, x.result.w, 0.5, 0.125).w;
+  row.w_diag = evaluate(p.grid, x.result.w, 0.25, 0.25).w;
+  row.force = total_contact_force(p, x.result.lambda);
   row.mean_line = row.force / (2 * M_PI * scene.radius);  // with f = 0 the whole push is on the rim
-  row.line = line_force(p, x.lambda);
-  // The smoothed line load: point values scatter about it by some 10% (see line_force.hpp).
-  if (!row.line.empty()) row.q0 = line_force_fit(row.line, 0), row.q45 = line_force_fit(row.line, M_PI / 4);
+  row.line = line_force(p, x.result.lambda);
+  // q at 0 and pi/4: the spline's own value; for point rows the cos 4k theta fit, since the points
+  // scatter about it by some 10 % (see line_force.hpp).
+  if (!row.line.empty()) {
+    const bool spline = row.line.spline_degree > 0;
+    row.q0 = spline ? line_force_value(row.line, 0) : line_force_fit(row.line, 0);
+    row.q45 = spline ? line_force_value(row.line, M_PI / 4) : line_force_fit(row.line, M_PI / 4);
+  }
   row.seconds = seconds_since(t0);
 
-  const SolutionRoundoff roundoff(p, x.w, x.lambda);
-  const Grid& g = p.grid;
-  const auto node_dof = [&](int k, Component c) { return g.dof(k % (g.nx + 1), k / (g.nx + 1), c); };
-  Eigen::MatrixXd outputs(g.unknowns(), 4);
-  outputs << roundoff.unknown(node_dof(top, kW)), roundoff.point_value(0.5, 0.125), roundoff.point_value(0.25, 0.25),
-      roundoff.unknown(node_dof(twist, kWxy)) * (1 - kPoissonRatio);
-  const std::vector<double> noise = roundoff.of(outputs);
-  row.noise_max_w = noise[0], row.noise_w_mid = noise[1], row.noise_w_diag = noise[2], row.noise_m12 = noise[3];
-  row.noise_force = exact_solve_roundoff(n, row.force), row.noise_mean_line = exact_solve_roundoff(n, row.mean_line);
-  row.noise_q0 = exact_solve_roundoff(n, row.q0), row.noise_q45 = exact_solve_roundoff(n, row.q45);
-  if (!x.converged) std::cerr << "continuum: " << to_string(kind) << " n = " << n << ": " << x.message << "\n";
+  const Refinement& refined = x.result.levels.back().refinement;
+  if (!refined.w.empty()) {
+    // A refined answer (D27) is the same on every machine to the refinement's floor, in w and in the
+    // forces alike: the corrections' size once they stop shrinking.
+    const double w_size = x.result.w.lpNorm<Eigen::Infinity>(), floor_w = std::max(refined.floor_w(), 4 * DBL_EPSILON);
+    const double floor_mu = std::max(refined.floor_mu(), 4 * DBL_EPSILON);
+    row.noise_max_w = row.noise_w_mid = row.noise_w_diag = row.noise_m12 = floor_w * w_size;
+    row.noise_force = floor_mu * row.force, row.noise_mean_line = floor_mu * row.mean_line;
+    row.noise_line = floor_mu * std::max(std::abs(row.line.max), std::abs(row.line.min));
+    row.noise_q0 = row.noise_q45 = row.noise_line;
+  } else {
+    // Round-off of the problem solved (a quarter here), read at the whole plate's points.
+    const SolutionRoundoff roundoff(x.solved, x.part_w, x.part_lambda);
+    Eigen::MatrixXd outputs(x.solved.grid.unknowns(), 4);
+    outputs << roundoff.point_value(f.x[top], f.y[top]), roundoff.point_value(0.5, 0.125), roundoff.point_value(0.25, 0.25),
+        roundoff.point_twist(f.x[twist], f.y[twist]) * (1 - kPoissonRatio);
+    const std::vector<double> noise = roundoff.of(outputs);
+    row.noise_max_w = noise[0], row.noise_w_mid = noise[1], row.noise_w_diag = noise[2], row.noise_m12 = noise[3];
+    row.noise_force = exact_solve_roundoff(n, row.force), row.noise_mean_line = exact_solve_roundoff(n, row.mean_line);
+    row.noise_q0 = exact_solve_roundoff(n, row.q0), row.noise_q45 = exact_solve_roundoff(n, row.q45);
+    // Point values of q scatter more than aggregates between BLAS thread counts (up to 3 u n^3 max q).
+    if (!row.line.empty()) row.noise_line = exact_solve_roundoff(n, row.line.max) * row.line.q.size();
+  }
+  if (!x.result.converged) std::cerr << "continuum: " << v.name << " n = " << n << ": " << x.result.message << "\n";
   return row;
 }
 
 std::string num(double v, double noise) { return std::isfinite(v) ? fmt_above(v, noise, 10, 'g') : ""; }
 std::string num(const Row& r, const Quantity& q) { return num(r.*q.field, r.*q.noise); }
 
-std::vector<double> column(const std::vector<Row>& rows, SamplingKind kind, double Row::*field) {
+std::vector<double> column(const std::vector<Row>& rows, const std::string& kind, double Row::*field) {
   std::vector<double> v;
   for (const Row& r : rows)
     if (r.kind == kind) v.push_back(r.*field);
@@ -108,15 +140,15 @@ std::vector<double> column(const std::vector<Row>& rows, SamplingKind kind, doub
 std::string csv(const std::vector<Row>& rows) {
   std::ostringstream o;
   o << "# continuum: the paper's problem (f = 0, R = 0.0625 on the disk of radius 0.25) solved exactly on n x n\n"
-       "# grids, three samplings of the constraint; made by build/continuum. max_w and max_abs_m12 over the grid\n"
-       "# nodes (nu = 0.3); mean_line_force = total_force / (2 pi r); q_fit: the line load on the rim\n"
-       "# fitted by cos(4 k theta), k = 0..3, at theta = 0 and pi/4 (edge only). Digits are printed down to\n"
-       "# 10 times each value's round-off estimate (w and m12: src/roundoff.hpp; forces: u n^3 relative)\n"
+       "# grids, four samplings of the constraint; made by build/continuum. max_w and max_abs_m12 over the grid\n"
+       "# nodes (nu = 0.3); mean_line_force = total_force / (2 pi r); q_theta: the line load on the rim at\n"
+       "# theta = 0 and pi/4: the spline's value (edge), the fit by cos(4 k theta), k = 0..3 (edge-points). Digits down to\n"
+       "# 10 times each value's round-off: a refined solve's floor (D27), otherwise src/roundoff.hpp's estimate\n"
        "sampling,n,unknowns,samples,edge_points,certified";
   for (const Quantity& q : kQuantities) o << "," << q.column;
   o << "\n";
   for (const Row& r : rows) {
-    o << to_string(r.kind) << "," << r.n << "," << r.unknowns << "," << r.samples << "," << r.edge_points << ","
+    o << r.kind << "," << r.n << "," << r.unknowns << "," << r.samples << "," << r.edge_points << ","
       << (r.certified ? 1 : 0);
     for (const Quantity& q : kQuantities) o << "," << num(r, q);
     o << "\n";
@@ -127,7 +159,8 @@ std::string csv(const std::vector<Row>& rows) {
 struct Study {
   std::vector<Row> rows;
   std::vector<int> grids;
-  std::map<std::pair<SamplingKind, std::string>, Extrapolation> fits;
+  std::vector<std::string> kinds;  // the variants' names, in order
+  std::map<std::pair<std::string, std::string>, Extrapolation> fits;
   RimAnswer yardstick;  // the rim-contact series: the answer every row is measured against
 };
 
@@ -141,10 +174,7 @@ RowError error_of(const Row& r, const RimAnswer& y) {
   // The finest row already holds the series' max w: its search is not repeated for every grid.
   const double w = y.rows.back().max_w, f = s.total_force(), mean = s.q_cos.at(0);
   RowError e{std::abs(r.max_w - w) / w, std::abs(r.force - f) / f};
-  if (!r.line.empty() && r.line.theta.size() == r.line.q.size()) {
-    e.line = 0;
-    for (size_t k = 0; k < r.line.q.size(); ++k) e.line = std::max(e.line, std::abs(r.line.q[k] - s.q(r.line.theta[k])) / mean);
-  }
+  if (!r.line.empty()) e.line = max_distance(r.line, [&](double t) { return s.q(t); }) / mean;
   return e;
 }
 // An observed order from two successive errors (grids h and h / 2), empty where it says nothing.
@@ -153,12 +183,11 @@ std::string order_between(double coarse, double fine) {
   return fmt("%.2f", std::log2(coarse / fine));
 }
 
-const std::vector<SamplingKind> kKinds = {SamplingKind::Edge, SamplingKind::Gauss, SamplingKind::Nodes};
 
 std::string answer(const Study& s) {
-  const Extrapolation& w = s.fits.at({SamplingKind::Edge, "max w"});
-  const Extrapolation& f = s.fits.at({SamplingKind::Edge, "total force"});
-  const Extrapolation& m = s.fits.at({SamplingKind::Edge, "mean line force"});
+  const Extrapolation& w = s.fits.at({"edge", "max w"});
+  const Extrapolation& f = s.fits.at({"edge", "total force"});
+  const Extrapolation& m = s.fits.at({"edge", "mean line force"});
   std::ostringstream o;
   const RimSeries& y = s.yardstick.finest;
   o << "**The plate's answer** (the rim-contact series, no grid; its bars are the change from the truncation before): "
@@ -187,8 +216,8 @@ std::string markdown(const Study& s) {
     << "Every run is the exact discrete solution (no eps), certified to 1e-10. Edge sampling puts the constraint on "
        "the rim, where the plate touches, and at the nodes inside it; Gauss and nodal sampling are the paper's two "
        "readings of (8).\n\n";
-  for (SamplingKind k : kKinds) {
-    o << "**" << to_string(k) << " sampling**\n\n| n | unknowns | samples | certified";
+  for (const std::string& k : s.kinds) {
+    o << "**" << k << " sampling**\n\n| n | unknowns | samples | certified";
     for (const Quantity& q : kQuantities) o << " | " << q.name;
     o << " |\n|---|---|---|---";
     for (size_t i = 0; i < kQuantities.size(); ++i) o << "|---";
@@ -206,13 +235,13 @@ std::string markdown(const Study& s) {
        "q at the same angle, over the mean load); the order is log2 of the ratio of successive errors.\n\n"
        "| sampling | n | max w | order | total force | order | line load, pointwise | order |\n"
        "|---|---:|---:|---:|---:|---:|---:|---:|\n";
-  for (SamplingKind k : kKinds) {
+  for (const std::string& k : s.kinds) {
     const Row* before = nullptr;
     for (const Row& r : s.rows) {
       if (r.kind != k) continue;
       const RowError e = error_of(r, s.yardstick);
       const RowError b = before ? error_of(*before, s.yardstick) : RowError{NAN, NAN, NAN};
-      o << "| " << to_string(k) << " | " << r.n << " | " << fmt_above(e.max_w, r.noise_max_w / r.max_w, 2) << " | "
+      o << "| " << k << " | " << r.n << " | " << fmt_above(e.max_w, r.noise_max_w / r.max_w, 2) << " | "
         << order_between(b.max_w, e.max_w) << " | " << fmt_above(e.force, r.noise_force / r.force, 2) << " | "
         << order_between(b.force, e.force) << " | " << (std::isfinite(e.line) ? fmt("%.2e", e.line) : "") << " | "
         << order_between(b.line, e.line) << " |\n";
@@ -228,10 +257,10 @@ std::string markdown(const Study& s) {
        "increments beyond the finest grid at least halve each time.\n\n"
     << "| quantity | sampling | orders (coarse to fine) | verdict |\n|---|---|---|---|\n";
   for (const Quantity& q : kQuantities)
-    for (SamplingKind k : kKinds) {
+    for (const std::string& k : s.kinds) {
       const Extrapolation& e = s.fits.at({k, q.name});
       if (e.orders.empty()) continue;
-      o << "| " << q.name << " | " << to_string(k) << " | ";
+      o << "| " << q.name << " | " << k << " | ";
       for (size_t i = 0; i < e.orders.size(); ++i) o << (i ? ", " : "") << format_order(e.orders[i], e.order_noise[i]);
       o << " | " << verdict(e) << " |\n";
     }
@@ -248,10 +277,10 @@ std::string limits(const Study& s) {
        "# A bar within 10 times the round-off estimate of the limit (src/roundoff.hpp) is that estimate instead\n"
        "quantity,sampling,steady,order,limit,bar\n";
   for (const Quantity& q : kQuantities)
-    for (SamplingKind k : kKinds) {
+    for (const std::string& k : s.kinds) {
       const Extrapolation& e = s.fits.at({k, q.name});
       if (e.orders.empty()) continue;
-      o << q.column << "," << to_string(k) << "," << (e.steady ? 1 : 0) << ","
+      o << q.column << "," << k << "," << (e.steady ? 1 : 0) << ","
         << (e.steady ? format_order(e.orders.back(), e.order_noise.back()) : "") << "," << num(e.limit, e.limit_noise)
         << "," << bar_number(e) << "\n";
     }
@@ -268,35 +297,41 @@ std::string errors(const Study& s) {
   const double w_bar = s.yardstick.bar_max_w, f_bar = s.yardstick.bar_force;
   for (const Row& r : s.rows) {
     const RowError e = error_of(r, s.yardstick);
-    o << to_string(r.kind) << "," << r.n << "," << fmt("%.10g", 1.0 / r.n) << ","
+    o << r.kind << "," << r.n << "," << fmt("%.10g", 1.0 / r.n) << ","
       << fmt_above(e.max_w, (r.noise_max_w + w_bar) / r.max_w, 5) << ","
       << fmt_above(e.force, (r.noise_force + f_bar) / r.force, 5) << ","
-      << (std::isfinite(e.line) ? fmt_above(e.line, exact_solve_roundoff(r.n, r.line.max) * r.line.q.size() / r.line.mean, 3) : "")
+      << (std::isfinite(e.line) ? fmt_above(e.line, r.noise_line / r.line.mean, 3) : "")
       << "\n";
   }
   return o.str();
 }
 
-// Point values of q scatter more than its aggregates (up to 3 u n^3 max q between BLAS thread
-// counts), and a file of N values stays the same only if each one's odds of changing are well
-// under 1/N: so each is printed above N times the bound, and only grids up to n = 256 are kept,
-// where that still leaves four digits for the plot.
+// The line load on a quarter of the rim (the square's symmetries give the rest) beside the series':
+// the spline rows' function at 181 angles on every grid from n = 32, and the point rows' values on
+// n = 128, where they scatter. Point values scatter more than aggregates between BLAS thread counts
+// (up to 3 u n^3 max q), so each is printed above the number of values times that bound.
 std::string line_loads(const Study& s) {
   std::ostringstream o;
-  o << "# continuum: the line load q (force per unit length) at the rim points, edge sampling, n = 32 ... 256;\n"
-       "# made by build/continuum. Printed to the digits round-off leaves the same on every machine; fit: the\n"
-       "# least-squares fit sum_k a_k cos(4 k theta) on that grid (line_force.hpp) at the same angle\n"
-       "n,theta,q,fit\n";
-  bool first = true;
-  for (const Row& r : s.rows)
-    if (r.kind == SamplingKind::Edge && r.n >= 32 && r.n <= 256) {
-      if (!first) o << "\n\n";  // gnuplot: one data block per grid
-      first = false;
-      const double noise = exact_solve_roundoff(r.n, r.line.max) * static_cast<double>(r.line.q.size());
+  o << "# continuum: the line load q (force per unit length) on the rim, theta in [0, pi/2], and the rim-contact\n"
+       "# series' q_series at the same angle; sampling edge: the spline of the rows' multipliers (D25) at 181\n"
+       "# angles, n = 32 ... finest; edge-points: the point values on n = 128. Made by build/continuum; printed\n"
+       "# to the digits round-off leaves the same on every machine; distance: |q - q_series| over the series' mean load\n"
+       "sampling,n,theta,q,q_series,distance\n";
+  const RimSeries& y = s.yardstick.finest;
+  for (const Row& r : s.rows) {
+    const bool spline = r.kind == "edge" && r.n >= 32, points = r.kind == "edge-points" && r.n == 128;
+    if (!spline && !points) continue;
+    const double noise = r.noise_line;
+    auto put = [&](double t, double q) {
+      o << r.kind << "," << r.n << "," << fmt("%.10g", t) << "," << num(q, noise) << "," << fmt("%.10g", y.q(t)) << ","
+        << fmt_above(std::abs(q - y.q(t)) / y.q_cos.at(0), noise / y.q_cos.at(0), 3) << "\n";
+    };
+    if (spline)
+      for (int k = 0; k <= 180; ++k) put(M_PI / 2 * k / 180, line_force_value(r.line, M_PI / 2 * k / 180));
+    else
       for (size_t k = 0; k < r.line.q.size(); ++k)
-        o << r.n << "," << fmt("%.10g", r.line.theta[k]) << "," << num(r.line.q[k], noise) << ","
-          << num(line_force_fit(r.line, r.line.theta[k]), noise) << "\n";
-    }
+        if (r.line.theta[k] <= M_PI / 2 + 1e-12) put(r.line.theta[k], r.line.q[k]);
+  }
   return o.str();
 }
 
@@ -328,14 +363,16 @@ int main(int argc, char** argv) {
     std::ostringstream timings;
     timings << "# continuum run times in seconds (assembly and exact solve, grid-sequenced); not byte-identical\n"
                "sampling,n,seconds\n";
-    for (SamplingKind k : kKinds)
+    for (const Variant& v : variants(scene)) {
+      s.kinds.push_back(v.name);
       for (int n : s.grids) {
-        std::cerr << "continuum: " << to_string(k) << " sampling, n = " << n << "\n";
-        s.rows.push_back(solve_one(k, n, scene));
-        timings << to_string(k) << "," << n << "," << fmt("%.3g", s.rows.back().seconds) << "\n";
+        std::cerr << "continuum: " << v.name << " sampling, n = " << n << "\n";
+        s.rows.push_back(solve_one(v, n, scene));
+        timings << v.name << "," << n << "," << fmt("%.3g", s.rows.back().seconds) << "\n";
       }
+    }
     for (const Quantity& q : kQuantities)
-      for (SamplingKind k : kKinds)
+      for (const std::string& k : s.kinds)
         s.fits[{k, q.name}] = extrapolate(column(s.rows, k, q.field), column(s.rows, k, q.noise));
     write_file_atomically(out + "/continuum.csv", csv(s.rows));
     write_file_atomically(out + "/continuum_error.csv", errors(s));

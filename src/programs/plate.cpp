@@ -331,7 +331,7 @@ plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::Vec
   r.report.certificate_tol = r.exact_opt.tol;
   r.report.model = describe(scene.mirrors);
   r.report.model_unknowns = scene.solved.grid.unknowns();
-  r.report.refinement = exact.levels.back().refinement;
+  r.report.refinement = exact.levels.back().refinement.w;
   return result;
 }
 
@@ -393,6 +393,7 @@ int solve_and_write(const Options& o, Run& r, plate::Clock::time_point t0) {
   const NodalFields nodes = nodal_fields(problem, result.w, r.phi, xi, o.nu);
   r.report.xi = xi;
   r.report.line = line_force(problem, xi);
+  r.report.dip_below_edge = dip_below_edge(problem, result.w, r.phi);
   if (o.rate) r.report.lambda1h = smallest_eigenpair(problem.K, problem.M).lambda;
   r.report.problem = &problem;
   r.report.result = &result;

@@ -1,13 +1,15 @@
 // time_to_accuracy: how long the whole `plate` process takes to bring max w and the total contact
-// force within 1e-4 ... 1e-8 (relative) of the plate's answer (the rim-contact series), for each solver and sampling, and
-// how long the peer FreeFEM takes (gmsh and FreeFem++ on the cross-check's meshes of the square).
-// Reads the plate's answer from results/rim_answer.csv (the rim-contact series); writes results/time_to_accuracy.{csv,md}.
+// force within 1e-4 ... 1e-10 (relative) of the plate's answer (the rim-contact series), for each solver and sampling,
+// how long the peers take (PETSc's SNESVI; gmsh and FreeFem++ on the cross-check's meshes of the square), how the
+// default's line load converges point by point, what the mirror lines save, and how long the series itself takes.
+// Reads the plate's answer from results/rim_answer.csv; writes results/time_to_accuracy.{csv,md}.
 // Run by `make bench`; `time_to_accuracy --help` lists the options.
 #include <CLI/CLI.hpp>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -23,6 +25,9 @@
 #include "freefem.hpp"
 #include "measurements.hpp"
 #include "published.hpp"
+#include "richardson.hpp"
+#include "rim_contact.hpp"
+#include "rim_report.hpp"
 #include "stopwatch.hpp"
 
 using namespace plate;
@@ -46,18 +51,41 @@ struct Run {
   const Config* config;
   int n = 0, status = -1;
   double seconds = 0, peak_mib = 0, max_w = NAN, force = NAN, err_w = NAN, err_f = NAN;
+  double err_line = NAN;  // the default's line load: max over the rim of |q - q_series| over the mean load
 };
+
+// A run that takes longer than this ends its configuration's sequence of grids: the next grid would
+// take several times as long and only show a slower solver being slower.
+constexpr double kBudgetSeconds = 20;
+
+// The line load written by `plate --line-csv` (theta, x, y, q at fixed angles), against the series'.
+double line_error(const std::string& path, const RimSeries& series) {
+  std::ifstream in(path);
+  double worst = NAN;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#' || line[0] == 't') continue;
+    double theta, x, y, q;
+    char c1, c2, c3;
+    std::istringstream f(line);
+    if (!(f >> theta >> c1 >> x >> c2 >> y >> c3 >> q)) continue;
+    const double d = std::abs(q - series.q(theta)) / series.q_cos.at(0);
+    worst = std::isnan(worst) ? d : std::max(worst, d);
+  }
+  return worst;
+}
 
 // The whole process, as a user runs it: wall time from fork to exit, and its peak memory. The
 // peer writes "key value" lines where plate writes JSON.
-Run run_plate(const std::string& plate, const std::string& peer, const Config& c, int n, const std::string& json) {
+Run run_plate(const std::string& plate, const std::string& peer, const Config& c, int n, const std::string& json,
+               const std::string& line_csv = "") {
   Run r;
   r.config = &c;
   r.n = n;
   std::filesystem::remove(json);
+  const std::string grid = n > 0 ? " -n " + std::to_string(n) : "";
   const std::string cmd = c.peer_method.empty()
-                              ? plate + " -n " + std::to_string(n) + " " + c.args + " -q --json " + json
-                              : peer + " -n " + std::to_string(n) + " --method " + c.peer_method + " --out " + json;
+                              ? plate + grid + " " + c.args + " -q --json " + json + (line_csv.empty() ? "" : " --line-csv " + line_csv)
+                              : peer + grid + " --method " + c.peer_method + " --out " + json;
   std::vector<std::string> words;
   std::istringstream in(cmd);
   for (std::string w; in >> w;) words.push_back(w);
@@ -110,10 +138,10 @@ Run run_freefem_level(const FreeFem& ff, const Config& c, int n) {
 }
 
 std::string cell(const std::vector<Run>& runs, const Config& c, double Run::*err, double level, double floor) {
-  if (level < floor) return "below the limit's error bar";
+  if (level < floor) return "below the answer's bar";
   for (const Run& r : runs)  // runs are in increasing n, so the first one within reach is the fastest
     if (r.config == &c && r.status == 0 && r.*err <= level)
-      return fmt("%.3g s", r.seconds) + (c.freefem ? " (" + std::to_string(4 * r.n) + " cells per quarter circle)" : " (n = " + std::to_string(r.n) + ")");
+      return fmt("%.3g s", r.seconds) + (c.freefem ? " (" + std::to_string(4 * r.n) + " cells)" : " (n = " + std::to_string(r.n) + ")");
   return "not reached";
 }
 
@@ -128,21 +156,87 @@ const Run* first_within(const std::vector<Run>& runs, bool freefem) {
   return best;
 }
 
+std::string met(bool b) { return b ? "**met**" : "**not met**"; }
+
 // Target: at 1e-5 relative in max w, at least 100 times faster than FreeFEM.
 void freefem_target(std::ostream& md, const std::vector<Run>& runs) {
   const Run *ours = first_within(runs, false), *ff = first_within(runs, true);
-  md << "\n**Target**: max w within 1e-5 relative of the limit at least 100 times faster than FreeFEM: ";
+  md << "- max w within 1e-5 of the answer at least 100 times faster than FreeFEM: ";
   if (!ours || !ff) {
     md << "**not measured**: " << (ours ? "FreeFEM" : "this code") << " did not reach it.\n";
     return;
   }
   const double ratio = ff->seconds / ours->seconds;
-  md << (ratio >= 100 ? "**met**" : "**not met**") << ": " << ours->config->name << " at n = " << ours->n << " takes "
-     << fmt("%.3g", ours->seconds) << " s, FreeFEM at " << 4 * ff->n << " cells per quarter circle "
-     << fmt("%.3g", ff->seconds) << " s: " << fmt("%.1f", ratio) << " times.\n";
+  md << met(ratio >= 100) << ": " << ours->config->name << " at n = " << ours->n << " takes " << fmt("%.3g", ours->seconds)
+     << " s, FreeFEM at " << 4 * ff->n << " cells per quarter circle " << fmt("%.3g", ff->seconds) << " s: "
+     << fmt("%.1f", ratio) << " times.\n";
 }
 
-std::string report(const std::vector<Run>& runs, const std::vector<Config>& configs, const std::map<std::string, double>& lim) {
+// Target: max w within 1e-9 and the total force within 1e-8 (relative) in at most 1 s.
+void accuracy_target(std::ostream& md, const std::vector<Run>& runs, const Config& def) {
+  const Run* best = nullptr;
+  for (const Run& r : runs)
+    if (r.config == &def && r.status == 0 && r.err_w <= 1e-9 && r.err_f <= 1e-8 && (!best || r.seconds < best->seconds)) best = &r;
+  md << "- The default `plate` with max w within 1e-9 and the total force within 1e-8 of the answer in at most 1 s: ";
+  if (!best) {
+    const Run* finest = nullptr;
+    for (const Run& r : runs)
+      if (r.config == &def && r.status == 0) finest = &r;
+    md << "**not met**: no run reached both";
+    if (finest)
+      md << " (the finest, n = " << finest->n << ", " << fmt("%.3g", finest->seconds) << " s, is off by "
+         << fmt("%.1e", finest->err_w) << " and " << fmt("%.1e", finest->err_f) << ")";
+    md << ".\n";
+    return;
+  }
+  md << met(best->seconds <= 1.0) << ": n = " << best->n << ", " << fmt("%.3g", best->seconds) << " s (off by "
+     << fmt("%.1e", best->err_w) << " and " << fmt("%.1e", best->err_f) << ").\n";
+}
+
+// The default's line load point by point: orders between successive grids, and the value at n = 128.
+void line_target(std::ostream& md, const std::vector<Run>& runs, const Config& def) {
+  std::vector<const Run*> seq;
+  for (const Run& r : runs)
+    if (r.config == &def && r.status == 0 && std::isfinite(r.err_line)) seq.push_back(&r);
+  md << "- The default's line load, point by point (largest distance from the series' q over 720 angles, over the "
+        "mean load): ";
+  std::vector<double> orders;
+  for (size_t i = 0; i < seq.size(); ++i) {
+    md << (i ? ", " : "") << fmt("%.1e", seq[i]->err_line) << " (n = " << seq[i]->n << ")";
+    if (i) orders.push_back(std::log2(seq[i - 1]->err_line / seq[i]->err_line));
+  }
+  md << "; orders";
+  for (size_t i = 0; i < orders.size(); ++i) md << (i ? ", " : " ") << fmt("%.2f", orders[i]);
+  const Run* at128 = nullptr;
+  for (const Run* r : seq)
+    if (r->n == 128) at128 = r;
+  // From n = 128 on, where the knots first outnumber the line load's harmonics by a margin.
+  bool from128 = orders.size() >= 2, steady = orders.size() >= 2;
+  double lo = INFINITY;
+  for (size_t i = 0; i < orders.size(); ++i)
+    if (seq[i + 1]->n > 128) lo = std::min(lo, orders[i]);
+  if (orders.size() >= 2) steady = std::abs(orders.back() - orders[orders.size() - 2]) <= kSteadySpread;
+  md << ". Within 1e-3 of the mean at n = 128: "
+     << (at128 ? met(at128->err_line <= 1e-3) + " (" + fmt("%.1e", at128->err_line) + ")" : std::string("**not measured**"))
+     << "; a steady order of at least 1.5: "
+     << (from128 && std::isfinite(lo) ? met(lo >= 1.5 && steady) + " (least order beyond n = 128: " + fmt("%.2f", lo) +
+                                            (steady ? ", the last two within " + fmt("%g", kSteadySpread) : ", the last two not within " + fmt("%g", kSteadySpread)) + ")"
+                                      : std::string("**not measured**"))
+     << ".\n";
+}
+
+struct Repeated {
+  std::string what;
+  std::vector<double> seconds;
+  double median() const {
+    std::vector<double> s = seconds;
+    std::sort(s.begin(), s.end());
+    return s.empty() ? NAN : s[s.size() / 2];
+  }
+};
+
+std::string report(const std::vector<Run>& runs, const std::vector<Config>& configs, const std::map<std::string, double>& lim,
+                   const Repeated& part, const Repeated& whole, const Repeated& series, int ratio_n) {
   std::ostringstream md;
   md << "Generated by `build/time_to_accuracy` (`make bench`); timings are this machine's (2 cores) and vary between "
         "runs. Each cell is the wall time of the whole process (`plate`, PETSc's SNESVI peer `peer_snesvi`, or gmsh and "
@@ -151,33 +245,31 @@ std::string report(const std::vector<Run>& runs, const std::vector<Config>& conf
         "answer (max w = " << fmt("%.13g", lim.at("max_w")) << ", total force = " << fmt("%.13g", lim.at("total_force"))
      << ", from the rim-contact series, `rim_answer.csv`, relative error bars " << fmt("%.1e", lim.at("max_w_bar") / lim.at("max_w")) << " and "
      << fmt("%.1e", lim.at("total_force_bar") / lim.at("total_force"))
-     << "). Only runs that exit with 0 (certified) count; a level below the limit's own error bar cannot be "
-        "measured.\n\n"
-     << "| solver and sampling | max w 1e-4 | 1e-5 | 1e-6 | 1e-8 | total force 1e-4 | 1e-5 | 1e-6 | 1e-8 |\n"
-        "|---|---|---|---|---|---|---|---|---|\n";
-  for (const Config& c : configs) {
-    md << "| " << c.name;
-    for (const auto& [err, key] : {std::pair{&Run::err_w, "max_w"}, {&Run::err_f, "total_force"}})
-      for (double level : {1e-4, 1e-5, 1e-6, 1e-8})
+     << "). Only runs that exit with 0 (certified) count. Each configuration runs on finer grids until one run takes "
+        "more than " << fmt("%g", kBudgetSeconds) << " s (or its finest grid): the next would take several times as "
+        "long and only show a slower solver being slower.\n\n";
+  for (const auto& [err, key, title] : {std::tuple{&Run::err_w, "max_w", "max w"}, {&Run::err_f, "total_force", "total force"}}) {
+    md << "| " << title << ": solver and sampling | 1e-4 | 1e-6 | 1e-8 | 1e-9 | 1e-10 |\n|---|---|---|---|---|---|\n";
+    for (const Config& c : configs) {
+      if (c.max_n == 0) continue;  // the series: timed apart
+      md << "| " << c.name;
+      for (double level : {1e-4, 1e-6, 1e-8, 1e-9, 1e-10})
         md << " | " << cell(runs, c, err, level, lim.at(std::string(key) + "_bar") / lim.at(key));
-    md << " |\n";
+      md << " |\n";
+    }
+    md << "\n";
   }
-  // The target: max w within 1e-7 (absolute) and the force within 1e-5 (relative) in at most 1 s.
-  const Run* best = nullptr;
-  for (const Run& r : runs)
-    if (r.status == 0 && std::abs(r.max_w - lim.at("max_w")) <= 1e-7 && r.err_f <= 1e-5 && (!best || r.seconds < best->seconds)) best = &r;
-  md << "\n**Target**: max w within 1e-7 of the limit and the total force within 1e-5 relative, in at most 1 s for "
-        "the whole `plate` process: ";
-  if (1e-7 < lim.at("max_w_bar") || 1e-5 < lim.at("total_force_bar") / lim.at("total_force"))
-    md << "(the limit itself is known only to " << fmt("%.1e", lim.at("max_w_bar")) << " in max w and "
-       << fmt("%.1e", lim.at("total_force_bar") / lim.at("total_force")) << " relative in the force, so the verdict "
-       << "below is only as good as that) ";
-  if (!best)
-    md << "**not met**: no run reached that accuracy.\n";
-  else
-    md << (best->seconds <= 1.0 ? "**met**" : "**not met**") << ": the fastest run that reaches it is " << best->config->name
-       << " at n = " << best->n << ", " << fmt("%.3g", best->seconds) << " s (max w off by "
-       << fmt("%.1e", std::abs(best->max_w - lim.at("max_w"))) << ", force by " << fmt("%.1e", best->err_f) << ").\n";
+  md << "**Targets**, measured in this run:\n\n";
+  accuracy_target(md, runs, configs.front());
+  line_target(md, runs, configs.front());
+  const double ratio = whole.median() / part.median();
+  md << "- The default `plate` at n = " << ratio_n << " (a quarter of the plate, by its mirror lines) at least 4 times "
+        "faster than the whole-plate solve (`--symmetry none`), medians of " << part.seconds.size()
+     << " alternating runs: " << fmt("%.3g", part.median()) << " s against " << fmt("%.3g", whole.median()) << " s, "
+     << fmt("%.1f", ratio) << " times: " << met(ratio >= 4) << ".\n"
+     << "- The whole `plate --scheme semi-analytic` process (the series to its last settled digits, the premise "
+        "checked) in at most 50 ms: median of " << series.seconds.size() << " runs " << fmt("%.3g", 1000 * series.median())
+     << " ms: " << met(series.median() <= 0.05) << ".\n";
   freefem_target(md, runs);
   return md.str();
 }
@@ -185,14 +277,15 @@ std::string report(const std::vector<Run>& runs, const std::vector<Config>& conf
 std::string csv(const std::vector<Run>& runs) {
   std::ostringstream o;
   o << "# time_to_accuracy: the whole plate process per solver, sampling and n; errors relative to the continuum\n"
-       "# answer (rim_answer.csv, the rim-contact series); status: plate's exit status (0 certified, 3 not converged). Timings vary.\n"
-       "config,n,status,seconds,peak_mib,max_w,total_force,err_max_w,err_total_force\n";
+       "# answer (rim_answer.csv, the rim-contact series); err_line: the default's line load, max over 720 angles of\n"
+       "# |q - q_series| over the mean; status: the exit status (0 certified, 3 not converged). Timings vary.\n"
+       "config,n,status,seconds,peak_mib,max_w,total_force,err_max_w,err_total_force,err_line\n";
   for (size_t i = 0; i < runs.size(); ++i) {
     const Run& r = runs[i];
     if (i > 0 && runs[i - 1].config != r.config) o << "\n\n";  // one gnuplot data block per configuration
     o << r.config->name << "," << r.n << "," << r.status << "," << fmt("%.4g", r.seconds) << "," << fmt("%.0f", r.peak_mib)
-      << "," << fmt("%.10g", r.max_w) << "," << fmt("%.10g", r.force) << "," << fmt("%.3e", r.err_w) << ","
-      << fmt("%.3e", r.err_f) << "\n";
+      << "," << fmt("%.13g", r.max_w) << "," << fmt("%.13g", r.force) << "," << fmt("%.3e", r.err_w) << ","
+      << fmt("%.3e", r.err_f) << "," << (std::isfinite(r.err_line) ? fmt("%.3e", r.err_line) : "") << "\n";
   }
   return o.str();
 }
@@ -204,13 +297,15 @@ int main(int argc, char** argv) {
   std::string plate = "build/plate", limits = "results/rim_answer.csv", out = "results", reference = "reference";
   FreeFem ff{"reference/square_with_circle.geo", "reference/contact_hct.edp", "build/tta-work", {}};
   std::string peer = (std::filesystem::path(argv[0]).parent_path() / "peer_snesvi").string();
-  int max_n = 512, max_freefem = 16;
+  int max_n = 1024, max_freefem = 16, ratio_n = 128, repeats = 3;
   app.add_option("--plate", plate, "the plate program")->check(CLI::ExistingFile)->capture_default_str();
   app.add_option("--answer", limits, "the plate's answer (make rim-series writes it)")->capture_default_str();
   app.add_option("--out", out, "folder for the results")->capture_default_str();
   app.add_option("--max-n", max_n, "finest grid of any run")->check(CLI::Range(8, 2048))->capture_default_str();
   app.add_option("--max-freefem", max_freefem, "finest FreeFEM mesh: 4 n cells per quarter circle (0: none)")
       ->check(CLI::IsMember({0, 1, 2, 4, 8, 16, 32}))->capture_default_str();
+  app.add_option("--ratio-n", ratio_n, "grid of the quarter-against-whole timing")->check(CLI::IsMember({16, 32, 64, 128, 256, 512}))->capture_default_str();
+  app.add_option("--repeats", repeats, "runs of each side of a timed comparison (odd: the median is a run)")->check(CLI::Range(1, 15))->capture_default_str();
   app.add_option("--peer", peer, "the PETSc SNESVI program")->check(CLI::ExistingFile)->capture_default_str();
   app.add_option("--reference", reference, "folder with paper_numbers.csv")->check(CLI::ExistingDirectory)->capture_default_str();
   app.add_option("--geo", ff.geo, "FreeFEM's mesh of the square")->check(CLI::ExistingFile)->capture_default_str();
@@ -222,9 +317,11 @@ int main(int argc, char** argv) {
     const auto lim = read_rim_answer(limits);
     const std::vector<Config> configs = {
         // The names are the figure's key (paper/figures/time_to_accuracy.gp lists the blocks in this order).
-        {"exact edge (default)", "", 512, false, ""},
+        {"exact edge splines (default)", "", 1024, false, ""},
+        {"exact edge points", "--edge-rows points", 512, false, ""},
+        {"exact edge splines whole plate", "--symmetry none", 512, false, ""},
         {"exact nodes", "--sampling nodes", 512, false, ""},
-        {"exact Gauss", "--sampling gauss", 256, false, ""},
+        {"exact Gauss", "--sampling gauss", 512, false, ""},
         {"(3a) edge", "--scheme nonlinear", 128, false, ""},
         {"(3a) Gauss (paper)", "--scheme nonlinear --sampling gauss", 128, false, ""},
         {"(5a) Gauss (paper)", "--scheme linear --sampling gauss", 32, false, ""},
@@ -233,22 +330,41 @@ int main(int argc, char** argv) {
         {"FreeFEM HCT vertices", "", max_freefem, true, ""},  // no comma: the name is a CSV field
     };
     ff.scene = read_paper_scene(reference);
+    const RimAnswer series = rim_answer(rim_scene(ff.scene));
     std::filesystem::create_directories(ff.work);
     std::filesystem::create_directories(out);
     const std::string json = (std::filesystem::temp_directory_path() / ("tta_" + std::to_string(getpid()) + ".json")).string();
+    const std::string line_csv = (std::filesystem::temp_directory_path() / ("tta_" + std::to_string(getpid()) + "_q.csv")).string();
     std::vector<Run> runs;
     for (const Config& c : configs)
       for (int n = c.freefem ? 1 : 8; n <= std::min(c.max_n, max_n); n *= 2) {
         std::cerr << "time_to_accuracy: " << c.name << ", n = " << n << " ...";
-        Run r = c.freefem ? run_freefem_level(ff, c, n) : run_plate(plate, peer, c, n, json);
+        const bool line = &c == &configs.front();
+        Run r = c.freefem ? run_freefem_level(ff, c, n) : run_plate(plate, peer, c, n, json, line ? line_csv : "");
         r.err_w = std::abs(r.max_w - lim.at("max_w")) / lim.at("max_w");
         r.err_f = std::abs(r.force - lim.at("total_force")) / lim.at("total_force");
+        if (line && r.status == 0) r.err_line = line_error(line_csv, series.finest);
         std::cerr << fmt(" %.3g s", r.seconds) << ", exit " << r.status << "\n";
         runs.push_back(r);
+        if (r.seconds > kBudgetSeconds) break;
       }
+    // The mirror lines' saving, and the series' own time, each the median of alternating runs.
+    const Config part{"part", "", ratio_n, false, ""}, whole{"whole", "--symmetry none", ratio_n, false, ""},
+        semi{"series", "--scheme semi-analytic", 0, false, ""};
+    Repeated t_part{"part", {}}, t_whole{"whole", {}}, t_series{"series", {}};
+    for (int k = 0; k < repeats; ++k) {
+      t_part.seconds.push_back(run_plate(plate, peer, part, ratio_n, json).seconds);
+      t_whole.seconds.push_back(run_plate(plate, peer, whole, ratio_n, json).seconds);
+    }
+    for (int k = 0; k < 2 * repeats + 1; ++k) {
+      const Run r = run_plate(plate, peer, semi, 0, json);
+      if (r.status != 0) throw std::runtime_error("plate --scheme semi-analytic exited with " + std::to_string(r.status));
+      t_series.seconds.push_back(r.seconds);
+    }
     std::filesystem::remove(json);
+    std::filesystem::remove(line_csv);
     write_file_atomically(out + "/time_to_accuracy.csv", csv(runs));
-    write_file_atomically(out + "/time_to_accuracy.md", report(runs, configs, lim));
+    write_file_atomically(out + "/time_to_accuracy.md", report(runs, configs, lim, t_part, t_whole, t_series, ratio_n));
     return kSuccess;
   } catch (const std::exception& e) {
     std::cerr << "time_to_accuracy: error: " << e.what() << "\n";

@@ -176,6 +176,7 @@ std::string summary_json(const Report& r) {
   j["max_abs_m12"] = number(e.max_abs_m12);
   j["line_force"] = line_force_json(r.line);
   j["constraint_violation"] = number((p.phi - p.sampling.S * s.w).cwiseMax(0.0).maxCoeff());
+  j["dip_below_edge"] = number(r.dip_below_edge);
   check_json(j, r);
   j["refinement"] = numbers(r.refinement);
   j["contact_nodes"] = Json::array();
@@ -215,12 +216,15 @@ std::string summary_text(const Report& r) {
     const LineForce& l = r.line;
     o << "line load on the edge (" << l.q.size() << (l.spline_degree > 0 ? " spline knots" : " points") << "): mean " << num(l.mean) << " (total " << num(l.total)
       << " over length " << num(l.length) << "), min " << num(l.min) << ", max " << num(l.max);
-    if (!l.theta.empty())
+    if (!l.theta.empty() && l.spline_degree > 0)
+      o << "; q(0) = " << num(line_force_value(l, 0)) << ", q(pi/4) = " << num(line_force_value(l, M_PI / 4)) << " (the spline)";
+    else if (!l.theta.empty())
       o << "; fitted q(0) = " << num(line_force_fit(l, 0)) << ", q(pi/4) = " << num(line_force_fit(l, M_PI / 4))
-        << (l.spline_degree > 0 ? " (the spline: " : " (points: ") << num(line_force_value(l, 0)) << ", "
-        << num(line_force_value(l, M_PI / 4)) << ")";
+        << " (points: " << num(line_force_value(l, 0)) << ", " << num(line_force_value(l, M_PI / 4)) << ")";
     o << "\n";
-    if (!l.fourier.empty()) {
+    if (std::isfinite(r.dip_below_edge))
+      o << "  between the rows the plate dips at most " << num(r.dip_below_edge) << " below the edge (points h/8 apart)\n";
+    if (!l.fourier.empty() && l.spline_degree == 0) {
       o << "  fit q(theta) ~";
       for (size_t k = 0; k < l.fourier.size(); ++k) o << (k ? " + " : " ") << num(l.fourier[k]) << (k ? " cos " + std::to_string(4 * k) + " theta" : "");
       o << "\n";

@@ -27,6 +27,7 @@ struct Report {
   std::string model = "whole plate";  // the part of the plate solved (mirror.hpp)
   int model_unknowns = 0;             // its unknowns; 0: the whole grid's
   std::vector<double> refinement;     // the exact solve's refinement steps, each correction's relative size
+  double dip_below_edge = NAN;        // max of phi - w along the edge curve (NaN: no edge)
 };
 
 // The angles at which --line-csv gives a spline line load (and the semi-analytic scheme its own).
