@@ -36,7 +36,8 @@ PAPER_INPUTS := paper/paper.md paper/style.css $(wildcard paper/filters/*.lua) $
 VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread libmuparser-dev libcli11-dev freefem++ gmsh \
              libpetsc-real-dev libmumps-dev pandoc gnuplot-nox g++ cmake libgtest-dev libbenchmark-dev
 
-# What each step makes and about how long it takes here (2 cores), said before it starts.
+# What each step makes and about how long it takes here (2 cores), said before it starts;
+# scripts/step.sh also says, when it ends, how long it took (and logs it to build/step-times.log).
 say = @printf '\n== make: %s (about %s)\n' $(1) $(2)
 
 .PHONY: all test deps build results paper document crosscheck hard-cases continuum rim-series bench check-results clean help FORCE
@@ -66,36 +67,31 @@ test: build ## run the test suite
 crosscheck: results/crosscheck.md $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) ## FreeFEM (HCT, gmsh) against this code, exactly and by the paper's penalty method: results/crosscheck.md, results/crosscheck_penalty.md
 
 $(CROSSCHECK) &: $(BUILD)/crosscheck reference/square_with_circle.geo reference/disk_with_punch.geo reference/contact_hct.edp reference/plate_constants.csv $(PAPER_NUMBERS) | deps
-	$(call say,"results/crosscheck.md: FreeFEM and this code on the square; FreeFEM on the disk","1 min")
-	$(BUILD)/crosscheck --out results --work $(BUILD)/crosscheck-work
+	scripts/step.sh "results/crosscheck.md: FreeFEM and this code on the square; FreeFEM on the disk" "1 min" $(BUILD)/crosscheck --out results --work $(BUILD)/crosscheck-work
 
 # The penalty cross-check reads our table, contraction factors and Fig. 2 data from results/.
 $(CROSSCHECK_PENALTY) &: $(BUILD)/crosscheck_penalty reference/square_with_circle.geo reference/penalty_hct.edp reference/contact_hct.edp \
                          reference/paper_table.csv reference/plate_constants.csv $(PAPER_NUMBERS) results/table.csv results/contraction.csv \
                          results/fig2.csv results/fig2_mesh.csv | deps
-	$(call say,"results/crosscheck_penalty.md: the FreeFEM penalty script against the table of the paper and this code at fixed eps and in Fig. 2","9 min")
-	$(BUILD)/crosscheck_penalty --out results --work $(BUILD)/crosscheck-penalty-work
+	scripts/step.sh "results/crosscheck_penalty.md: the FreeFEM penalty script against the table of the paper and this code at fixed eps and in Fig. 2" "9 min" $(BUILD)/crosscheck_penalty --out results --work $(BUILD)/crosscheck-penalty-work
 $(PENALTY_FIGURE): results/crosscheck_penalty_fig2.csv
 
 hard-cases: results/hard_cases.md ## tiny eps, area and point contact, n = 512, every bad input: results/hard_cases.md
 
 # It runs build/plate on every line of tests/bad_input.tsv, so it depends on both.
 $(HARD_CASES) &: $(BUILD)/hard_cases $(BUILD)/plate tests/bad_input.tsv reference/plate_constants.csv
-	$(call say,"results/hard_cases.md: tiny eps; point and area contact; n = 512; every bad input","8 min")
-	$(BUILD)/hard_cases --out results --plate $(BUILD)/plate --cases tests/bad_input.tsv --scratch $(BUILD)/hard-cases-work
+	scripts/step.sh "results/hard_cases.md: tiny eps; point and area contact; n = 512; every bad input" "8 min" $(BUILD)/hard_cases --out results --plate $(BUILD)/plate --cases tests/bad_input.tsv --scratch $(BUILD)/hard-cases-work
 
 rim-series: $(RIM_SERIES) ## the paper's scene by the rim-contact series, the yardstick: results/rim_series.md (1 min)
 
 $(RIM_SERIES) &: $(BUILD)/rim_series $(PAPER_NUMBERS)
-	$(call say,"results/rim_series.md: the rim-contact series at increasing truncations; the clamped square against it","1 min")
-	$(BUILD)/rim_series --out results
+	scripts/step.sh "results/rim_series.md: the rim-contact series at increasing truncations; the clamped square against it" "1 min" $(BUILD)/rim_series --out results
 
 continuum: $(CONTINUUM) ## the h -> 0 limit: exact solves n = 8 ... 512, three samplings, orders, Richardson (about 6 min)
 
 # The timings file is written by the same run; it is not byte-identical between runs.
 $(CONTINUUM_DATA) &: $(BUILD)/continuum $(PAPER_NUMBERS)
-	$(call say,"results/continuum*: exact solves n = 8 ... 512 with three samplings","4 min")
-	$(BUILD)/continuum --out results
+	scripts/step.sh "results/continuum*: exact solves n = 8 ... 512 with three samplings" "4 min" $(BUILD)/continuum --out results
 
 results/continuum.svg results/continuum.png: results/continuum_error.csv
 results/continuum_q.svg results/continuum_q.png: results/continuum_q.csv
@@ -105,20 +101,16 @@ results: $(RESULTS) ## the paper's table, Fig. 1, Fig. 2 and the contraction che
 # Each driver writes its files whole (temporary file, then rename); gnuplot writes to a
 # temporary file that is renamed once it is complete.
 $(TABLES) &: $(BUILD)/table reference/paper_table.csv $(PAPER_NUMBERS)
-	$(call say,"results/table*: the paper's iteration table and the finer grids","6 min")
-	$(BUILD)/table --out results
+	scripts/step.sh "results/table*: the paper's iteration table and the finer grids" "6 min" $(BUILD)/table --out results
 
 $(CONTRACTION) &: $(BUILD)/contraction $(PAPER_NUMBERS)
-	$(call say,"results/contraction.md: the measured contraction factors","5 s")
-	$(BUILD)/contraction --out results
+	scripts/step.sh "results/contraction.md: the measured contraction factors" "5 s" $(BUILD)/contraction --out results
 
 $(FIG1_DATA) &: $(BUILD)/fig1 $(PAPER_NUMBERS)
-	$(call say,"Fig. 1 data","5 s")
-	$(BUILD)/fig1 --out results
+	scripts/step.sh "Fig. 1 data" "5 s" $(BUILD)/fig1 --out results
 
 $(FIG2_DATA) &: $(BUILD)/fig2 $(PAPER_NUMBERS)
-	$(call say,"Fig. 2 data","1 min")
-	$(BUILD)/fig2 --out results
+	scripts/step.sh "Fig. 2 data" "1 min" $(BUILD)/fig2 --out results
 
 results/fig1.svg results/fig1.png: $(FIG1_DATA)
 results/fig2.svg results/fig2.png: $(FIG2_DATA)
@@ -133,8 +125,7 @@ bench: $(BENCH_ALL) ## speed against error up to n = 1024 with PETSc's SNESVI, t
 
 # Timings differ on every run: these files are remade only when the programs change.
 $(BENCH) &: $(BUILD)/bench $(BUILD)/peer_snesvi $(PAPER_NUMBERS) results/rim_answer.csv
-	$(call say,"results/speed_vs_error*: every solver and PETSc's SNESVI to n = 1024 in a process of its own","20 min")
-	$(BUILD)/bench --answer results/rim_answer.csv --out results
+	scripts/step.sh "results/speed_vs_error*: every solver and PETSc's SNESVI to n = 1024 in a process of its own" "20 min" $(BUILD)/bench --answer results/rim_answer.csv --out results
 
 results/micro_benchmarks.md: $(BUILD)/micro_bench
 	$(call say,"results/micro_benchmarks.md","1 min")
@@ -144,8 +135,7 @@ results/speed_vs_error.svg results/speed_vs_error.png: $(BENCH)
 
 # The whole plate process against the continuum limit; timings differ on every run.
 $(TTA) &: $(BUILD)/time_to_accuracy $(BUILD)/plate $(BUILD)/peer_snesvi results/rim_answer.csv reference/square_with_circle.geo reference/contact_hct.edp
-	$(call say,"results/time_to_accuracy*: whole plate/SNESVI/FreeFEM runs against the continuum limit","5 min")
-	$(BUILD)/time_to_accuracy --plate $(BUILD)/plate --answer results/rim_answer.csv --out results
+	scripts/step.sh "results/time_to_accuracy*: whole plate/SNESVI/FreeFEM runs against the continuum limit" "5 min" $(BUILD)/time_to_accuracy --plate $(BUILD)/plate --answer results/rim_answer.csv --out results
 
 results/time_to_accuracy.svg results/time_to_accuracy.png: results/time_to_accuracy.csv
 

@@ -17,6 +17,7 @@ packages=(
   freefem++ libfreefem++ gmsh
   pandoc gnuplot-nox fonts-dejavu-extra
   libpetsc-real-dev
+  chromium poppler-utils  # the document printed as a reader's browser prints it: its page count is tested
 )
 
 missing=()

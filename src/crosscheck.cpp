@@ -47,7 +47,10 @@ CheckValues solve_ours(int n, const SamplingSpec& spec, const Field& phi, const 
   v.force = total_contact_force(p, x.lambda);
   v.mean_line = v.force / (2 * M_PI * radius);  // with f = 0 the whole push is on the rim
   v.line = line_force(p, x.lambda);
-  v.q0 = line_force_fit(v.line, 0), v.q45 = line_force_fit(v.line, M_PI / 4);  // NaN without edge rows
+  // The spline's own values; point rows scatter, so theirs come from the cos 4k theta fit (NaN without edge rows).
+  const bool spline = v.line.spline_degree > 0;
+  v.q0 = spline ? line_force_value(v.line, 0) : line_force_fit(v.line, 0);
+  v.q45 = spline ? line_force_value(v.line, M_PI / 4) : line_force_fit(v.line, M_PI / 4);
   if (v.line.empty()) v.line = binned_line_force(p, x.lambda, rim, kRimBins);
   v.seconds = seconds_since(t0);
   return v;

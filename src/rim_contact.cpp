@@ -571,30 +571,34 @@ RimPeak RimSeries::max_w() const {
     }
   std::partial_sort(cand.begin(), cand.begin() + 4, cand.end(), [](const RimPeak& a, const RimPeak& b) { return a.w > b.w; });
   RimPeak best = cand[0];
-  const double L = std::max(s.lx, s.ly);
-  for (int c = 0; c < 4; ++c) {
-    RimPeak p = cand[c];
-    for (int it = 0; it < 50; ++it) {
-      const PointValues v = at(p.x, p.y);
-      const double det = v.wxx * v.wyy - v.wxy * v.wxy;
-      double dx, dy;
-      if (v.wxx < 0 && det > 0) {  // Newton on grad w = 0 where the Hessian is negative definite
-        dx = -(v.wyy * v.wx - v.wxy * v.wy) / det, dy = -(-v.wxy * v.wx + v.wxx * v.wy) / det;
-      } else {  // otherwise a short uphill step
-        const double g = std::hypot(v.wx, v.wy);
-        if (g == 0) break;
-        dx = 1e-3 * L * v.wx / g, dy = 1e-3 * L * v.wy / g;
-      }
-      const double step = std::hypot(dx, dy), cap = 0.05 * L;
-      if (step > cap) dx *= cap / step, dy *= cap / step;
-      const double x = std::clamp(p.x + dx, 0.0, s.lx), y = std::clamp(p.y + dy, 0.0, s.ly), wn = w(x, y);
-      if (wn < p.w) break;
-      p = {x, y, wn};
-      if (step <= 1e-15 * L) break;
-    }
-    if (p.w > best.w) best = p;
-  }
+  for (int c = 0; c < 4; ++c)
+    if (const RimPeak p = max_w_from(cand[c].x, cand[c].y); p.w > best.w) best = p;
   return best;
+}
+
+RimPeak RimSeries::max_w_from(double x0, double y0) const {
+  const RimScene& s = scene;
+  const double L = std::max(s.lx, s.ly);
+  RimPeak p{x0, y0, w(x0, y0)};
+  for (int it = 0; it < 50; ++it) {
+    const PointValues v = at(p.x, p.y);
+    const double det = v.wxx * v.wyy - v.wxy * v.wxy;
+    double dx, dy;
+    if (v.wxx < 0 && det > 0) {  // Newton on grad w = 0 where the Hessian is negative definite
+      dx = -(v.wyy * v.wx - v.wxy * v.wy) / det, dy = -(-v.wxy * v.wx + v.wxx * v.wy) / det;
+    } else {  // otherwise a short uphill step
+      const double g = std::hypot(v.wx, v.wy);
+      if (g == 0) break;
+      dx = 1e-3 * L * v.wx / g, dy = 1e-3 * L * v.wy / g;
+    }
+    const double step = std::hypot(dx, dy), cap = 0.05 * L;
+    if (step > cap) dx *= cap / step, dy *= cap / step;
+    const double x = std::clamp(p.x + dx, 0.0, s.lx), y = std::clamp(p.y + dy, 0.0, s.ly), wn = w(x, y);
+    if (wn < p.w) break;
+    p = {x, y, wn};
+    if (step <= 1e-15 * L) break;
+  }
+  return p;
 }
 
 // @region rim-premise
@@ -639,17 +643,23 @@ RimSeriesOptions rim_level(int level, bool extended) {
   return o;
 }
 
-RimAnswer rim_answer(const RimScene& s, int levels, bool extended) {
+RimAnswer rim_answer(const RimScene& s, int levels, bool extended, int first) {
   if (levels < 2) throw std::invalid_argument("rim_answer: levels must be >= 2");
+  if (first < 0 || first > levels - 3) throw std::invalid_argument("rim_answer: first must leave three levels");
   RimAnswer a;
-  for (int l = 0; l < levels; ++l) {
-    const RimSeriesOptions o = rim_level(l, extended);
-    RimSeries r = solve_rim_series(s, o);
-    const RimPeak p = r.max_w();
+  // The finest level first: its peak, found by a search over the plate, starts the coarser levels'
+  // Newton iterations, which then need no search of their own.
+  std::vector<RimSeries> series;
+  for (int l = first; l < levels; ++l) series.push_back(solve_rim_series(s, rim_level(l, extended)));
+  const RimPeak top = series.back().max_w();
+  for (int l = first; l < levels; ++l) {
+    RimSeries& r = series[l - first];
+    const RimSeriesOptions& o = r.options;
+    const RimPeak p = l == levels - 1 ? top : r.max_w_from(top.x, top.y);
     a.rows.push_back({l, o.harmonics, o.degree, o.corner_terms, r.unknowns, p.w, p.x, p.y, r.total_force(), r.q(0),
                       r.q(M_PI / 4), r.edge_residual, r.rim_residual});
-    if (l == levels - 1) a.finest = std::move(r);
   }
+  a.finest = std::move(series.back());
   // The bar of a quantity: the last change, floored at round-off (1000 u relative: q is a third
   // derivative, and its last digits move by more than u); settled if it shrank.
   a.settled = true;

@@ -99,6 +99,7 @@ struct RimSeries {
   double q(double theta) const;  // line load at polar angle theta about the disk's centre
   double total_force() const;    // Eq. (D23): 2 pi a q_cos[0]
   RimPeak max_w() const;         // grid search, then Newton on the gradient
+  RimPeak max_w_from(double x, double y) const;  // Newton (or uphill steps) from (x, y)
 };
 
 // Eq. (D22): Lap^2 w = f + q delta_rim, clamped, w = R on the rim; q and w from one least-squares
@@ -136,6 +137,7 @@ struct RimAnswer {
   double bar_max_w = 0, bar_force = 0, bar_q0 = 0, bar_q45 = 0;
   bool settled = false;
 };
-RimAnswer rim_answer(const RimScene& s, int levels = 6, bool extended = false);
+// `first`: the coarsest level solved (at least three levels are kept, for a bar that shrank).
+RimAnswer rim_answer(const RimScene& s, int levels = 6, bool extended = false, int first = 0);
 
 }  // namespace plate

@@ -1,6 +1,7 @@
 # The contact force per unit length along a quarter of the rim, from results/crosscheck_rim.csv
 # (written by build/crosscheck): FreeFEM's forces at the circle's vertices over their arcs, this
-# code's edge points, and its nodal and Gauss samplings binned by angle, each on its finest grid.
+# code's edge rows (the spline of their multipliers, a function of the angle), and its nodal and
+# Gauss samplings binned by angle, each on its finest grid.
 # Usage: gnuplot -e "fmt='svg'; out='results/rim.svg'" paper/figures/rim.gp
 if (fmt eq 'svg') { set terminal svg size 900,520 dynamic font 'Helvetica,15' } else { set terminal pngcairo size 900,520 font 'Helvetica,12' }
 set output out
@@ -15,5 +16,5 @@ data = 'results/crosscheck_rim.csv'
 sel(s) = (strcol(1) eq s) ? column(4) : NaN
 plot data using 3:(sel('bfs-nodes')) with histeps lw 1.5 lc rgb '#2e8b57' title 'nodes, binned', \
      data using 3:(sel('bfs-gauss')) with histeps lw 1.5 lc rgb '#8e44ad' title 'Gauss, binned', \
-     data using 3:(sel('bfs-edge')) with points pt 7 ps 0.5 lc rgb '#1f4e8c' title 'edge points', \
+     data using 3:(sel('bfs-edge')) with lines lw 2 lc rgb '#1f4e8c' title 'edge rows (spline)', \
      data using 3:(sel('freefem-hct')) with points pt 6 ps 0.9 lc rgb '#c0392b' title 'FreeFEM, circle vertices'

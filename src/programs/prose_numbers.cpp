@@ -222,15 +222,19 @@ void continuum_numbers(Numbers& num, const std::string& results) {
   }
   const std::size_t nodes = row("total_force", "nodes"), edge = row("total_force", "edge");
   const std::string src = "results/continuum_limits.csv total_force";
-  // How far the point values of the line load scatter about their fit, on the finest grid kept.
+  // How far point rows' line load lies from the series' q, and the spline rows' on the same grid.
   const CsvTable q = read_csv_table(results + "/continuum_q.csv");
-  const std::string finest = q.text(q.rows.size() - 1, "n");
-  double scatter = 0;
-  for (std::size_t r : q.where("n", finest))
-    scatter = std::max(scatter, std::abs(q.number(r, "q") / q.number(r, "fit") - 1));
+  const auto points = q.where("sampling", "edge-points");
+  if (points.empty()) throw std::runtime_error(q.path + ": no edge-points rows");
+  const std::string n_points = q.text(points.front(), "n");
+  double scatter = 0, spline = 0;
+  for (std::size_t r : points) scatter = std::max(scatter, std::abs(q.number(r, "q") / q.number(r, "q_series") - 1));
+  for (std::size_t r : q.where("sampling", "edge"))
+    if (q.text(r, "n") == n_points) spline = std::max(spline, std::abs(q.number(r, "q") / q.number(r, "q_series") - 1));
   num.put("continuum.q_scatter_percent", fmt("%.0f", 100 * scatter),
-          "results/continuum_q.csv finest n: max |q / fit - 1| in per cent");
-  num.put("continuum.q_n_finest", finest, "results/continuum_q.csv finest n");
+          "results/continuum_q.csv edge-points rows: max |q / q_series - 1| in per cent");
+  num.put("continuum.q_spline_off", fmt("%.1e", spline), "results/continuum_q.csv edge rows on the same n: max |q / q_series - 1|");
+  num.put("continuum.q_n_points", n_points, "results/continuum_q.csv edge-points n");
   num.put("continuum.nodes_force_limit", t.text(nodes, "limit"), src + " nodes limit");
   num.put("continuum.nodes_force_bar", t.text(nodes, "bar"), src + " nodes bar");
   num.put("continuum.nodes_force_bars_off",

@@ -80,7 +80,7 @@ std::string rim_summary_json(const RimReport& r) {
   for (const auto& [x, y] : r.points) j["w_at_points"].push_back({{"x", number(x)}, {"y", number(y)}, {"w", number(s.w(x, y))}});
   j["total_contact_force"] = number(s.total_force());
   j["total_contact_force_bar"] = number(a.bar_force);
-  j["max_abs_m12"] = number(rim_max_abs_m12(s, r.nu));
+  j["max_abs_m12"] = number(std::isfinite(r.max_abs_m12) ? r.max_abs_m12 : rim_max_abs_m12(s, r.nu));
   Json line = {{"angles", kRimAngles}, {"length", number(2 * M_PI * s.scene.radius)}, {"total", number(s.total_force())},
                {"mean", number(s.q_cos.empty() ? NAN : s.q_cos[0])}};
   double lo = INFINITY, hi = -INFINITY;
@@ -119,7 +119,7 @@ std::string rim_summary_text(const RimReport& r) {
   o << "max w = " << num(peak.w) << " +- " << bar(a.bar_max_w) << " at (" << num(peak.x) << ", " << num(peak.y) << ")\n";
   for (const auto& [x, y] : r.points) o << "w(" << num(x) << ", " << num(y) << ") = " << num(s.w(x, y)) << "\n";
   o << "total contact force = " << num(s.total_force()) << " +- " << bar(a.bar_force) << ", max |m12| = "
-    << num(rim_max_abs_m12(s, r.nu)) << " (searched on the plate)\n";
+    << num(std::isfinite(r.max_abs_m12) ? r.max_abs_m12 : rim_max_abs_m12(s, r.nu)) << " (searched on the plate)\n";
   o << "line load on the rim: mean " << num(s.q_cos.empty() ? NAN : s.q_cos[0]) << ", q(0) = " << num(s.q(0)) << " +- "
     << bar(a.bar_q0) << ", q(pi/4) = " << num(s.q(M_PI / 4)) << " +- " << bar(a.bar_q45) << "\n";
   o << "premise (contact along the whole rim): " << (a.premise.holds ? "holds" : "FAILS: " + a.premise.why)

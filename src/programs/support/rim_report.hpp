@@ -2,6 +2,7 @@
 // convergence study, as the same summary, JSON keys and line-load CSV as the grid schemes give,
 // where a key means the same thing, and without the keys that belong to a grid.
 #pragma once
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,6 +15,7 @@ namespace plate {
 struct RimReport {
   std::vector<std::pair<std::string, std::string>> config;  // every option, echoed
   const RimAnswer* answer = nullptr;
+  double max_abs_m12 = NAN;  // searched once (rim_max_abs_m12) by whoever fills the report
   std::vector<std::pair<double, double>> points;  // where the user asked for w
   double nu = kPoissonRatio;
   bool converged = false;
