@@ -11,6 +11,8 @@
 #include "line_force.hpp"
 #include "norms.hpp"
 #include "paper_case.hpp"
+#include "penalty_bound.hpp"
+#include "problem.hpp"
 
 using namespace plate;
 
@@ -27,6 +29,7 @@ Both solve_both(const Grid& g, const SamplingSpec& spec, const Field& phi, const
   EXPECT_TRUE(b.whole.result.converged) << b.whole.result.message;
   EXPECT_TRUE(b.part.result.converged) << b.part.result.message;
   EXPECT_FALSE(b.whole.mirrors.any());
+  EXPECT_TRUE(b.part.mirrors.any());
   return b;
 }
 
@@ -122,5 +125,33 @@ TEST(Mirror, EvaluationBeyondTheMirrorLineReflects) {
     const PointValues a = evaluate(x.whole().grid, x.result.w, px, py), b = evaluate(x.solved.grid, x.part_w, px, py);
     for (auto [u, v] : {std::pair{a.w, b.w}, {a.wx, b.wx}, {a.wy, b.wy}, {a.wxx, b.wxx}, {a.wxy, b.wxy}, {a.wyy, b.wyy}})
       EXPECT_NEAR(u, v, 1e-12 * (1 + std::abs(u))) << px << ", " << py;
+  }
+}
+
+// The penalty schemes' error bound (D13) on a quarter is the whole plate's: the same discrete
+// problem, so the same bound on the same (symmetric) iterate. Its two factors scale apart, the
+// Green's function at the centre by four and the residual's norm by one half, so a bound read at the
+// wrong node of the quarter, or with the wrong weights, shows here.
+TEST(Mirror, PenaltyErrorBoundOnTheQuarterIsTheWholePlates) {
+  const PaperScene& s = paper_scene();
+  const Grid whole = make_grid(16), quarter = part_of(whole, Mirrors{true, true});
+  for (const SamplingKind kind : {SamplingKind::Nodes, SamplingKind::Gauss}) {
+    const Problem pw = make_problem(whole, kind, s.obstacle(), kNoLoad), pq = make_problem(quarter, kind, s.obstacle(), kNoLoad);
+    Cholesky cw, cq;
+    cw.analyze(pw.K);
+    cq.analyze(pq.K);
+    // A symmetric iterate that violates the constraint: the plate lifted less than the obstacle.
+    const auto lifted = [&](const Grid& g) {
+      VectorXd v = VectorXd::Zero(g.unknowns());
+      for (int i = 0; i <= g.nx; ++i)
+        for (int j = 0; j <= g.ny; ++j)
+          if (const int d = g.dof(i, j, kW); d >= 0) v[d] = 0.5 * s.height;
+      return v;
+    };
+    const VectorXd w = lifted(pw.grid), wq = lifted(pq.grid);
+    const PenaltyBound bw = penalty_error_bound(pw, w, 1e-4, cw), bq = penalty_error_bound(pq, wq, 1e-4, cq);
+    EXPECT_NEAR(bq.green, 4 * bw.green, 1e-10 * bq.green);
+    EXPECT_NEAR(bq.residual, 0.5 * bw.residual, 1e-10 * bw.residual);
+    EXPECT_NEAR(bq.bound, bw.bound, 1e-10 * bw.bound);
   }
 }
