@@ -46,6 +46,9 @@ VectorXd extended_gap(const Problem& p, const VectorXd& w, const std::vector<int
   return gap;
 }
 
+// The largest relative correction a refinement step may make (see refine).
+constexpr double kLargestCorrection = 1e-3;
+
 // @region refinement
 // Eq. (D27): with the residuals in long double (D26), the double factor of K and a factor of G_AA,
 //   z = K^{-1} r_w,   G_AA dmu = r_A - S_A z,   dw = z + K^{-1} S_A^T dmu.
@@ -73,8 +76,11 @@ Refinement refine(const Problem& p, const Cholesky& chol, const std::vector<int>
     const double size = dw.lpNorm<Eigen::Infinity>() / std::max(w.lpNorm<Eigen::Infinity>(), 1e-300);
     const double size_mu = m > 0 ? dmu.lpNorm<Eigen::Infinity>() / std::max(mu.lpNorm<Eigen::Infinity>(), 1e-300) : 0.0;
     const bool shrinking = sizes.w.empty() || size < sizes.w.back();
+    // A refinement corrects round-off; a correction of a thousandth or more (or not finite) means
+    // the held rows' block G_AA is near-singular and the step is noise amplified, not a correction.
+    const bool small = std::isfinite(size) && std::isfinite(size_mu) && size < kLargestCorrection && size_mu < kLargestCorrection;
     sizes.w.push_back(size), sizes.mu.push_back(size_mu);
-    if (!shrinking) break;  // the residual's own round-off: this correction is noise, not applied
+    if (!shrinking || !small) break;  // the residual's own round-off, or a bad step: not applied
     w += dw;
     if (m > 0) mu += dmu;
     if (size <= 4 * DBL_EPSILON) break;
