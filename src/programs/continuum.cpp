@@ -259,7 +259,7 @@ std::string markdown(const Study& s) {
   for (const Quantity& q : kQuantities)
     for (const std::string& k : s.kinds) {
       const Extrapolation& e = s.fits.at({k, q.name});
-      if (e.orders.empty()) continue;
+      if (e.orders.empty() || !std::isfinite(e.limit)) continue;  // a sampling that has no such value (q off the rim)
       o << "| " << q.name << " | " << k << " | ";
       for (size_t i = 0; i < e.orders.size(); ++i) o << (i ? ", " : "") << format_order(e.orders[i], e.order_noise[i]);
       o << " | " << verdict(e) << " |\n";
@@ -279,7 +279,7 @@ std::string limits(const Study& s) {
   for (const Quantity& q : kQuantities)
     for (const std::string& k : s.kinds) {
       const Extrapolation& e = s.fits.at({k, q.name});
-      if (e.orders.empty()) continue;
+      if (e.orders.empty() || !std::isfinite(e.limit)) continue;  // a sampling that has no such value (q off the rim)
       o << q.column << "," << k << "," << (e.steady ? 1 : 0) << ","
         << (e.steady ? format_order(e.orders.back(), e.order_noise.back()) : "") << "," << num(e.limit, e.limit_noise)
         << "," << bar_number(e) << "\n";
