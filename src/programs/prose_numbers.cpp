@@ -257,6 +257,11 @@ void rim_series_numbers(Numbers& num, const std::string& results) {
     if (u.text(r, "n") != "0")
       num.put("fe.uniform_error_" + u.text(r, "n"), u.text(r, "relative_error").substr(u.number(r, "relative_error") < 0),
               "results/uniform_load.csv n = " + u.text(r, "n") + ": |relative_error|");
+  for (std::size_t r = 0; r < u.rows.size(); ++r)
+    if (u.text(r, "n") != "0")
+      num.put("fe.uniform_refined_error_" + u.text(r, "n"),  // its magnitude; a bound "< B" stays as printed
+              u.text(r, "relative_error_refined").substr(u.text(r, "relative_error_refined").rfind('-', 0) == 0),
+              "results/uniform_load.csv n = " + u.text(r, "n") + ": |relative_error_refined|");
   const CsvTable e = read_csv_table(results + "/continuum_error.csv");
   const std::vector<std::size_t> edge = e.where("sampling", "edge");
   if (edge.size() < 2) throw std::runtime_error(e.path + ": fewer than two edge rows");
@@ -264,6 +269,19 @@ void rim_series_numbers(Numbers& num, const std::string& results) {
   Range line;
   for (std::size_t r : edge) line.add(e.number(r, "err_line_pointwise"));
   num.put_range("continuum.edge_line_error", line, [](double v) { return fmt("%.2g", v); }, src + ": err_line_pointwise");
+  // The line load point by point, grid by grid, with its observed order; and point rows' for contrast.
+  for (std::size_t i = 0; i < edge.size(); ++i) {
+    const std::string n = e.text(edge[i], "n");
+    num.put("continuum.edge_line_error_" + n, fmt("%.1e", e.number(edge[i], "err_line_pointwise")), src + " n = " + n + ": err_line_pointwise");
+    if (i > 0)
+      num.put("continuum.edge_line_order_" + n,
+              fmt("%.1f", std::log2(e.number(edge[i - 1], "err_line_pointwise") / e.number(edge[i], "err_line_pointwise"))),
+              src + " n = " + n + ": log2 of the ratio to the grid before");
+  }
+  Range points;
+  for (std::size_t r : e.where("sampling", "edge-points")) points.add(e.number(r, "err_line_pointwise"));
+  num.put_range("continuum.points_line_error", points, [](double v) { return fmt("%.2g", v); },
+                "results/continuum_error.csv edge-points rows: err_line_pointwise");
   const std::size_t last = edge.back(), before = edge[edge.size() - 2];
   num.put("continuum.edge_n_finest", e.text(last, "n"), src + ": finest n");
   num.put("continuum.edge_n_before", e.text(before, "n"), src + ": the n before the finest");
@@ -282,6 +300,17 @@ void version_numbers(Numbers& num, const std::string& results) {
   const CsvTable t = read_csv_table(results + "/versions.csv");
   for (std::size_t r = 0; r < t.rows.size(); ++r)
     num.put("version." + t.text(r, "package"), t.text(r, "version"), "results/versions.csv (dpkg-query)");
+}
+
+// How long `make all` takes here: the sum of its steps' last successful times (scripts/step.sh keeps
+// one row per step in results/rebuild_times.csv), the compilation apart.
+void rebuild_numbers(Numbers& num, const std::string& results) {
+  const CsvTable t = read_csv_table(results + "/rebuild_times.csv");
+  double seconds = 0;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) seconds += t.number(r, "seconds");
+  if (!(seconds > 0)) throw std::runtime_error("prose_numbers: rebuild_times.csv holds no step");
+  num.put("rebuild.minutes", fmt("%.0f", std::ceil(seconds / 60)), "results/rebuild_times.csv: the steps' seconds summed");
+  num.put("rebuild.steps", count(t.rows.size()), "results/rebuild_times.csv: rows");
 }
 
 // Our own choices that the prose states, from the constants the code uses.
@@ -346,6 +375,7 @@ int main(int argc, char** argv) {
     bench_error_numbers(fixed, speed);
     bench_numbers(machine, speed);
     version_numbers(machine, results);
+    rebuild_numbers(machine, results);
     write_file_atomically(out + "/numbers.csv", fixed.csv("numbers that rebuild byte for byte"));
     write_file_atomically(out + "/numbers_machine.csv",
                           machine.csv("numbers of this machine (timings, package versions); they vary"));
