@@ -609,7 +609,11 @@ RimPremise check_premise(const RimSeries& s, int angles, double tolerance) {
   RimPremise p;
   p.min_q = INFINITY;
   double max_q = 0;
-  for (int i = 0; i < angles; ++i) {
+  // A symmetric scene's series has the symmetry exactly (its basis is the symmetric one), so the
+  // sector that the mirrors leave, the angles in it and its edges, sees every value once.
+  const RimSymmetry sym = symmetry_of(sc);
+  const int sector = sym == RimSymmetry::Square ? (angles + 7) / 8 : sym == RimSymmetry::Mirrors ? (angles + 3) / 4 : angles - 1;
+  for (int i = 0; i <= sector; ++i) {
     const double th = 2 * M_PI * i / angles, q = s.q(th);
     max_q = std::max(max_q, std::abs(q));
     if (q < p.min_q) p.min_q = q, p.theta_min_q = th;
@@ -618,8 +622,9 @@ RimPremise check_premise(const RimSeries& s, int angles, double tolerance) {
   std::vector<double> radii;
   for (int k = 0; k < 24; ++k) radii.push_back(sc.radius * k / 24);
   radii.push_back(sc.radius * (1 - 1e-3));  // the plate leaves the rim inward with w_r <= 0
+  const int ring_sector = sym == RimSymmetry::Square ? 16 : sym == RimSymmetry::Mirrors ? 32 : 127;
   for (double r : radii)
-    for (int i = 0; i < (r == 0 ? 1 : 128); ++i) {
+    for (int i = 0; i <= (r == 0 ? 0 : ring_sector); ++i) {
       const double x = sc.cx + r * std::cos(2 * M_PI * i / 128), y = sc.cy + r * std::sin(2 * M_PI * i / 128);
       const double d = s.w(x, y) - sc.height;
       if (d < p.min_w_minus_R) p.min_w_minus_R = d, p.x_min = x, p.y_min = y;

@@ -39,13 +39,17 @@ double rim_max_abs_m12(const RimSeries& s, double nu, int k) {
     x = std::clamp(x, 0.0, s.scene.lx), y = std::clamp(y, 0.0, s.scene.ly);
     if (const double m = std::abs(s.moments(x, y, nu).m12); m > best) best = m, bx = x, by = y;
   };
-  for (int i = 0; i <= k; ++i)
-    for (int j = 0; j <= k; ++j) look(s.scene.lx * i / k, s.scene.ly * j / k);
-  // Then about the best lattice point, on lattices ten times finer each round (m12 is smooth).
-  for (double step = s.scene.lx / k / 5; step > 1e-9 * s.scene.lx; step /= 10) {
+  // |m12| is unchanged by a mirror of the scene (m12 changes sign), so a symmetric scene's lower
+  // left quarter holds its largest value.
+  const int last = symmetry_of(s.scene) == RimSymmetry::None ? k : k / 2;
+  for (int i = 0; i <= last; ++i)
+    for (int j = 0; j <= last; ++j) look(s.scene.lx * i / k, s.scene.ly * j / k);
+  // Then about the best lattice point, on lattices five times finer each round (m12 is continuous,
+  // its gradient may jump across the rim: the search closes in on the point, not on a zero slope).
+  for (double step = s.scene.lx / k / 5; step > 1e-9 * s.scene.lx; step /= 5) {
     const double x0 = bx, y0 = by;
-    for (int i = -10; i <= 10; ++i)
-      for (int j = -10; j <= 10; ++j) look(x0 + i * step, y0 + j * step);
+    for (int i = -6; i <= 6; ++i)
+      for (int j = -6; j <= 6; ++j) look(x0 + i * step, y0 + j * step);
   }
   return best;
 }
@@ -66,7 +70,8 @@ std::string rim_line_csv(const RimSeries& s, int angles) {
 std::string rim_summary_json(const RimReport& r) {
   const RimAnswer& a = *r.answer;
   const RimSeries& s = a.finest;
-  const RimPeak peak = s.max_w();
+  // The finest truncation's peak, found once by rim_answer's search.
+  const RimPeak peak{a.rows.back().x_max, a.rows.back().y_max, a.rows.back().max_w};
   Json j;
   j["config"] = Json::object();
   for (const auto& [k, v] : r.config) j["config"][k] = v;
@@ -111,7 +116,8 @@ std::string rim_summary_json(const RimReport& r) {
 std::string rim_summary_text(const RimReport& r) {
   const RimAnswer& a = *r.answer;
   const RimSeries& s = a.finest;
-  const RimPeak peak = s.max_w();
+  // The finest truncation's peak, found once by rim_answer's search.
+  const RimPeak peak{a.rows.back().x_max, a.rows.back().y_max, a.rows.back().max_w};
   std::ostringstream o;
   o << (r.converged ? "converged" : "NOT CONVERGED: " + r.message) << "\n";
   o << "series: " << a.rows.size() << " truncations, the last with " << a.rows.back().unknowns
