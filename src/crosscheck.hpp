@@ -4,6 +4,7 @@
 // bar its own steady order gives, is compared with the other's. Running FreeFEM and gmsh is the
 // programs' business (src/programs/support/freefem.*).
 #pragma once
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,9 @@ struct CheckValues {
   std::vector<double> w_at;  // at the check points, in order
   // Ours: the round-off estimates of max w and of w at the check points (roundoff.hpp); empty for FreeFEM.
   std::vector<double> noise_w;  // max w first, then the check points
+  // Ours, when the solve was refined (D27): the relative size of the forces' last correction, the
+  // floor to which they are the same on every machine; NaN otherwise (then u n^3 is assumed).
+  double force_floor = NAN;
   double mean_line = 0, q0 = 0, q45 = 0;  // line load on the rim: mean, and fitted q(0), q(pi/4)
   // The line load itself: at the edge points (edge sampling), at the circle's vertices (FreeFEM), or
   // binned by angle (the other samplings; q0 and q45 stay NaN for those).

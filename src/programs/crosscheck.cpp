@@ -50,7 +50,8 @@ struct Runs {
 
 // A value's round-off, by the code that computed it: FreeFEM's bound, or ours for a force.
 double noise(const CheckValues& r, double v) {
-  return r.code == kFreefemCode ? freefem_roundoff(r.h, v) : exact_solve_roundoff(r.cells, v);
+  if (r.code == kFreefemCode) return freefem_roundoff(r.h, v);
+  return std::isfinite(r.force_floor) ? r.force_floor * std::abs(v) : exact_solve_roundoff(r.cells, v);
 }
 // A deflection of ours (k = 0: max w; k >= 1: check point k - 1) has its own estimate (roundoff.hpp).
 double noise_w(const CheckValues& r, int k) {
@@ -240,8 +241,9 @@ void describe(std::ostream& md, const Setup& u, const Runs& runs) {
         "(the orders below). The line load q is the multiplier per unit length on the circle: ours the spline of "
         "the edge rows (D25), a function of the angle; FreeFEM's the vertex forces over their arcs, fitted by "
         "cos(4 k theta), k = 0 to 3, since point values scatter. The mean line force is the total force over "
-        "the circle's length. Digits are printed down to 10 times each code's round-off bound (u n^3 relative for "
-        "this code, see exact_solve_roundoff; " << kFreefemRoundoffRule << " for FreeFEM).\n\n";
+        "the circle's length. Digits are printed down to 10 times each code's round-off bound (for this code the size "
+        "of the refinement's last correction (D27), u n^3 relative for an unrefined solve, see exact_solve_roundoff; "
+     << kFreefemRoundoffRule << " for FreeFEM).\n\n";
   runs_table(md, runs, {&runs.ff, &runs.edge}, true);
 }
 
