@@ -28,7 +28,8 @@ set format x '%g'
 set format y '%g'
 set xlabel 'cells per side n'
 set ylabel 'time / (one factorisation + solve)'
-set key top left box opaque font ',10'
+# Bottom right, under the penalty schemes' lines and above the exact one's, the key covers no point.
+set key at graph 0.98, graph 0.42 right bottom box opaque font ',10'
 set title 'cost in factorisations'
 plot data using (sel('exact', '', 2)):(sel('exact', '', 10)) with linespoints pt 7 lw 2 lc 1 title 'exact constraint', \
      data using (sel('nonlinear', '1e-06', 2)):(sel('nonlinear', '1e-06', 10)) with linespoints pt 5 lc 2 title 'scheme (3a), tol 1e-6', \
