@@ -20,6 +20,8 @@ RIM_FIGURE := results/rim.svg results/rim.png
 CROSSCHECK_PENALTY := results/crosscheck_penalty.md results/crosscheck_penalty_table.csv results/crosscheck_penalty_eps.csv \
                       results/crosscheck_penalty_fig2.csv
 PENALTY_FIGURE := results/crosscheck_penalty_fig2.svg results/crosscheck_penalty_fig2.png
+# The paper's table as a plot: the published counts, ours and FreeFEM's, gathered by crosscheck_penalty.
+TABLE_FIGURE := results/table_iterations.svg results/table_iterations.png
 HARD_CASES := results/hard_cases.md results/hard_cases_input.md results/hard_cases_point.csv results/hard_cases_timings.csv
 NUMBERS   := results/numbers.csv results/numbers_machine.csv
 CONTINUUM_DATA := results/continuum.md results/continuum.csv results/continuum_error.csv results/continuum_q.csv \
@@ -31,7 +33,7 @@ TTA       := results/time_to_accuracy.csv results/time_to_accuracy.md
 BENCH_ALL := $(BENCH) results/speed_vs_error.svg results/speed_vs_error.png results/micro_benchmarks.md \
              $(TTA) results/time_to_accuracy.svg results/time_to_accuracy.png
 PAPER_INPUTS := paper/paper.md paper/style.css $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp src/programs/*.cpp src/programs/support/*.cpp src/programs/support/*.hpp) \
-                $(RESULTS) $(RIM_SERIES) $(CONTINUUM) $(CROSSCHECK) $(RIM_FIGURE) $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) $(HARD_CASES) $(BENCH_ALL) $(NUMBERS)
+                $(RESULTS) $(RIM_SERIES) $(CONTINUUM) $(CROSSCHECK) $(RIM_FIGURE) $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) $(TABLE_FIGURE) $(HARD_CASES) $(BENCH_ALL) $(NUMBERS)
 # The packages whose versions the document's reference list gives.
 VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread libmuparser-dev libcli11-dev freefem++ gmsh \
              libpetsc-real-dev libmumps-dev pandoc gnuplot-nox g++ cmake libgtest-dev libbenchmark-dev
@@ -42,7 +44,7 @@ say = @printf '\n== make: %s (about %s)\n' $(1) $(2)
 
 .PHONY: all test deps build results paper document crosscheck hard-cases continuum rim-series bench check-results clean help FORCE
 
-all: build results rim-series continuum crosscheck hard-cases bench paper ## build, then every result, figure, benchmark and the document (about an hour from scratch)
+all: build results rim-series continuum crosscheck hard-cases bench paper ## build, then every result, figure, benchmark and the document (about 25 minutes here, 2 cores)
 
 help: ## list the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 12
@@ -64,7 +66,7 @@ build: $(BINS) ## compile the solver, the plate program and the tests
 test: build ## run the test suite
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
-crosscheck: results/crosscheck.md $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) ## FreeFEM (HCT, gmsh) against this code, exactly and by the paper's penalty method: results/crosscheck.md, results/crosscheck_penalty.md
+crosscheck: results/crosscheck.md $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) $(TABLE_FIGURE) ## FreeFEM (HCT, gmsh) against this code, exactly and by the paper's penalty method: results/crosscheck.md, results/crosscheck_penalty.md
 
 $(CROSSCHECK) &: $(BUILD)/crosscheck reference/square_with_circle.geo reference/disk_with_punch.geo reference/contact_hct.edp reference/plate_constants.csv $(PAPER_NUMBERS) | deps
 	scripts/step.sh "results/crosscheck.md: FreeFEM and this code on the square; FreeFEM on the disk" "1 min" $(BUILD)/crosscheck --out results --work $(BUILD)/crosscheck-work
@@ -73,25 +75,26 @@ $(CROSSCHECK) &: $(BUILD)/crosscheck reference/square_with_circle.geo reference/
 $(CROSSCHECK_PENALTY) &: $(BUILD)/crosscheck_penalty reference/square_with_circle.geo reference/penalty_hct.edp reference/contact_hct.edp \
                          reference/paper_table.csv reference/plate_constants.csv $(PAPER_NUMBERS) results/table.csv results/contraction.csv \
                          results/fig2.csv results/fig2_mesh.csv | deps
-	scripts/step.sh "results/crosscheck_penalty.md: the FreeFEM penalty script against the table of the paper and this code at fixed eps and in Fig. 2" "9 min" $(BUILD)/crosscheck_penalty --out results --work $(BUILD)/crosscheck-penalty-work
+	scripts/step.sh "results/crosscheck_penalty.md: the FreeFEM penalty script against the table of the paper and this code at fixed eps and in Fig. 2" "5 min" $(BUILD)/crosscheck_penalty --out results --work $(BUILD)/crosscheck-penalty-work
 $(PENALTY_FIGURE): results/crosscheck_penalty_fig2.csv
+$(TABLE_FIGURE): results/crosscheck_penalty_table.csv
 
 hard-cases: results/hard_cases.md ## tiny eps, area and point contact, n = 512, every bad input: results/hard_cases.md
 
 # It runs build/plate on every line of tests/bad_input.tsv, so it depends on both.
 $(HARD_CASES) &: $(BUILD)/hard_cases $(BUILD)/plate tests/bad_input.tsv reference/plate_constants.csv
-	scripts/step.sh "results/hard_cases.md: tiny eps; point and area contact; n = 512; every bad input" "8 min" $(BUILD)/hard_cases --out results --plate $(BUILD)/plate --cases tests/bad_input.tsv --scratch $(BUILD)/hard-cases-work
+	scripts/step.sh "results/hard_cases.md: tiny eps; point and area contact; n = 512; every bad input" "2 min" $(BUILD)/hard_cases --out results --plate $(BUILD)/plate --cases tests/bad_input.tsv --scratch $(BUILD)/hard-cases-work
 
 rim-series: $(RIM_SERIES) ## the paper's scene by the rim-contact series, the yardstick: results/rim_series.md (1 min)
 
 $(RIM_SERIES) &: $(BUILD)/rim_series $(PAPER_NUMBERS)
 	scripts/step.sh "results/rim_series.md: the rim-contact series at increasing truncations; the clamped square against it" "1 min" $(BUILD)/rim_series --out results
 
-continuum: $(CONTINUUM) ## the h -> 0 limit: exact solves n = 8 ... 512, three samplings, orders, Richardson (about 6 min)
+continuum: $(CONTINUUM) ## the h -> 0 limit: exact solves n = 8 ... 512, three samplings, orders, Richardson (about 1 min)
 
 # The timings file is written by the same run; it is not byte-identical between runs.
 $(CONTINUUM_DATA) &: $(BUILD)/continuum $(PAPER_NUMBERS)
-	scripts/step.sh "results/continuum*: exact solves n = 8 ... 512 with three samplings" "4 min" $(BUILD)/continuum --out results
+	scripts/step.sh "results/continuum*: exact solves n = 8 ... 512 with three samplings" "1 min" $(BUILD)/continuum --out results
 
 results/continuum.svg results/continuum.png: results/continuum_error.csv
 results/continuum_q.svg results/continuum_q.png: results/continuum_q.csv
@@ -101,7 +104,7 @@ results: $(RESULTS) ## the paper's table, Fig. 1, Fig. 2 and the contraction che
 # Each driver writes its files whole (temporary file, then rename); gnuplot writes to a
 # temporary file that is renamed once it is complete.
 $(TABLES) &: $(BUILD)/table reference/paper_table.csv $(PAPER_NUMBERS)
-	scripts/step.sh "results/table*: the paper's iteration table and the finer grids" "6 min" $(BUILD)/table --out results
+	scripts/step.sh "results/table*: the paper's iteration table and the finer grids" "2 min" $(BUILD)/table --out results
 
 $(CONTRACTION) &: $(BUILD)/contraction $(PAPER_NUMBERS)
 	scripts/step.sh "results/contraction.md: the measured contraction factors" "5 s" $(BUILD)/contraction --out results
@@ -121,11 +124,11 @@ results/%.svg: paper/figures/%.gp | deps
 results/%.png: paper/figures/%.gp | deps
 	gnuplot -e "fmt='png'; out='$@.tmp'" $< && mv $@.tmp $@
 
-bench: $(BENCH_ALL) ## speed against error up to n = 1024 with PETSc's SNESVI, time to accuracy with FreeFEM, micro-benchmarks (about 25 min)
+bench: $(BENCH_ALL) ## speed against error up to n = 1024 with PETSc's SNESVI, time to accuracy with FreeFEM, micro-benchmarks (about 12 min)
 
 # Timings differ on every run: these files are remade only when the programs change.
 $(BENCH) &: $(BUILD)/bench $(BUILD)/peer_snesvi $(PAPER_NUMBERS) results/rim_answer.csv
-	scripts/step.sh "results/speed_vs_error*: every solver and PETSc's SNESVI to n = 1024 in a process of its own" "20 min" $(BUILD)/bench --answer results/rim_answer.csv --out results
+	scripts/step.sh "results/speed_vs_error*: every solver and PETSc's SNESVI to n = 1024 in a process of its own" "8 min" $(BUILD)/bench --answer results/rim_answer.csv --out results
 
 results/micro_benchmarks.md: $(BUILD)/micro_bench
 	$(call say,"results/micro_benchmarks.md","1 min")
@@ -135,14 +138,14 @@ results/speed_vs_error.svg results/speed_vs_error.png: $(BENCH)
 
 # The whole plate process against the continuum limit; timings differ on every run.
 $(TTA) &: $(BUILD)/time_to_accuracy $(BUILD)/plate $(BUILD)/peer_snesvi results/rim_answer.csv reference/square_with_circle.geo reference/contact_hct.edp
-	scripts/step.sh "results/time_to_accuracy*: whole plate/SNESVI/FreeFEM runs against the continuum limit" "5 min" $(BUILD)/time_to_accuracy --plate $(BUILD)/plate --answer results/rim_answer.csv --out results
+	scripts/step.sh "results/time_to_accuracy*: whole plate/SNESVI/FreeFEM runs against the continuum limit" "3 min" $(BUILD)/time_to_accuracy --plate $(BUILD)/plate --answer results/rim_answer.csv --out results
 
 results/time_to_accuracy.svg results/time_to_accuracy.png: results/time_to_accuracy.csv
 
 paper: results/paper.html ## the literate document: results/paper.html (self-contained, opens offline); remakes stale results first
 
 # A fresh clone's programs are newer than the results it carries, so `make paper` would remake
-# them all (about an hour). This renders the document from the results as they are.
+# them all (about 25 minutes). This renders the document from the results as they are.
 document: $(BUILD)/prose_numbers results/versions.csv | deps ## results/paper.html from the results/ present, remaking none of them (10 s)
 	$(BUILD)/prose_numbers --out results
 	$(render_paper)
@@ -162,7 +165,7 @@ define render_paper
 	pandoc paper/paper.md --from markdown --to html5 --standalone --self-contained --mathml \
 	  --lua-filter paper/filters/numbers.lua \
 	  --lua-filter paper/filters/equations.lua --lua-filter paper/filters/code.lua \
-	  --lua-filter paper/filters/include.lua --css paper/style.css --resource-path . \
+	  --lua-filter paper/filters/include.lua --lua-filter paper/filters/numbering.lua --css paper/style.css --resource-path . \
 	  --toc --toc-depth 2 --output results/paper.html.tmp && mv results/paper.html.tmp results/paper.html
 endef
 
@@ -183,8 +186,8 @@ CHECKED_crosscheck_penalty := crosscheck_penalty.md crosscheck_penalty_table.csv
 CHECKED_rim_series  := rim_series.md rim_series.csv rim_answer.csv uniform_load.csv
 CHECK_DIR := $(BUILD)/check-results
 
-check-results: build ## rebuild every deterministic table into build/check-results and compare it with results/ (about 35 min)
-	$(call say,"check-results: rim_series table contraction fig1 fig2 continuum crosscheck crosscheck_penalty rebuilt and compared with results/","35 min")
+check-results: build ## rebuild every deterministic table into build/check-results and compare it with results/ (about 12 min)
+	$(call say,"check-results: rim_series table contraction fig1 fig2 continuum crosscheck crosscheck_penalty rebuilt and compared with results/","12 min")
 	@rm -rf $(CHECK_DIR); status=0; \
 	for d in rim_series table contraction fig1 fig2 continuum crosscheck crosscheck_penalty; do \
 	  mkdir -p $(CHECK_DIR)/$$d; \

@@ -7,6 +7,11 @@
 #include <filesystem>
 #include <fstream>
 #include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <iterator>
+#include <vector>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -228,4 +233,90 @@ TEST(Readme, QuotesTheContinuumAnswerOfResults) {
   ASSERT_FALSE(answer.empty());
   EXPECT_NE(readme.find(answer.substr(0, answer.find_last_not_of('\n') + 1)), std::string::npos)
       << "README.md does not contain:\n" << answer;
+}
+
+namespace {
+// Each <table>...</table> of the built page, in order.
+std::vector<std::string> tables_of(const std::string& html) {
+  std::vector<std::string> out;
+  for (size_t at = html.find("<table"); at != std::string::npos; at = html.find("<table", at + 1))
+    out.push_back(html.substr(at, html.find("</table>", at) - at));
+  return out;
+}
+// The number of cells in each <tr> of a table, header row first.
+std::vector<size_t> cells_per_row(const std::string& table) {
+  std::vector<size_t> out;
+  const std::regex row(R"(<tr[^>]*>([\s\S]*?)</tr>)"), cell(R"(<t[hd][ >])");
+  for (std::sregex_iterator it(table.begin(), table.end(), row), end; it != end; ++it) {
+    const std::string r = (*it)[1];
+    out.push_back(std::distance(std::sregex_iterator(r.begin(), r.end(), cell), std::sregex_iterator()));
+  }
+  return out;
+}
+}  // namespace
+
+// A table cell that holds a pipe (a header "max |m12|") splits the row in pandoc's Markdown: the
+// row then has more or fewer cells than its header, and a reader sees numbers under the wrong names.
+TEST(Paper, EveryTableRowHasAsManyCellsAsItsHeader) {
+  const std::vector<std::string> tables = tables_of(slurp(kRoot / "results/paper.html"));
+  ASSERT_GT(tables.size(), 10u);
+  for (size_t t = 0; t < tables.size(); ++t) {
+    const std::vector<size_t> cells = cells_per_row(tables[t]);
+    ASSERT_GE(cells.size(), 2u) << "table " << t + 1 << " has no body";
+    for (size_t r = 1; r < cells.size(); ++r)
+      EXPECT_EQ(cells[r], cells[0]) << "table " << t + 1 << ", row " << r << ":\n" << tables[t].substr(0, 400);
+  }
+}
+
+// Every figure and every table carries a number in its caption (paper/filters/numbering.lua), and
+// no number is used twice, so that the prose and a printed page can point at it.
+TEST(Paper, EveryFigureAndTableHasANumberedCaption) {
+  const std::string html = slurp(kRoot / "results/paper.html");
+  std::set<std::string> seen;
+  size_t figures = 0;
+  for (size_t at = html.find("<figure"); at != std::string::npos; at = html.find("<figure", at + 1), ++figures) {
+    const std::string f = html.substr(at, html.find("</figure>", at) - at);
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(f, m, std::regex(R"(<figcaption[^>]*>\s*<strong>(Fig\. \d+)\.</strong>)")))
+        << "a figure without a numbered caption:\n" << f.substr(0, 300);
+    EXPECT_TRUE(seen.insert(m[1]).second) << m[1] << " is used twice";
+  }
+  EXPECT_GE(figures, 9u);
+  for (const std::string& t : tables_of(html)) {
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(t, m, std::regex(R"(<caption>\s*(?:<p>)?\s*<strong>(Table (?:A\.)?\d+)\.</strong>)")))
+        << "a table without a numbered caption:\n" << t.substr(0, 300);
+    EXPECT_TRUE(seen.insert(m[1]).second) << m[1] << " is used twice";
+  }
+}
+
+// The first section a reader meets states the answer (the yardstick's max w, as results/ holds it)
+// and how to reproduce everything.
+TEST(Paper, TheFirstScreenHoldsTheAnswerAndHowToReproduceIt) {
+  const std::string html = slurp(kRoot / "results/paper.html");
+  const size_t first = html.find("<h1", html.find("</nav>"));
+  ASSERT_NE(first, std::string::npos);
+  const std::string section = html.substr(first, html.find("<h1", first + 1) - first);
+  EXPECT_NE(section.find("id=\"the-answer\""), std::string::npos) << "the first section is not the answer";
+  const std::string answer = slurp(kRoot / "results/rim_answer.csv");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(answer, m, std::regex(R"(\nmax_w,([0-9.e+-]+),)"))) << "no max_w in rim_answer.csv";
+  EXPECT_NE(section.find(m[1].str()), std::string::npos) << "the answer " << m[1] << " is not on the first screen";
+  for (const char* command : {"make all", "make document", "make test"})
+    EXPECT_NE(section.find(command), std::string::npos) << command << " is not on the first screen";
+}
+
+// The main text (everything before the first appendix) prints on at most twenty pages of
+// Chromium's default size, as a reader printing results/paper.html would see it.
+TEST(Paper, TheMainTextPrintsOnTwentyPagesAtMost) {
+  const std::string command = "cd '" + kRoot.string() + "' && scripts/page_count.sh results/paper.html";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  char buffer[64] = {0};
+  const std::string out = fgets(buffer, sizeof buffer, pipe) ? buffer : "";
+  ASSERT_EQ(pclose(pipe), 0) << "scripts/page_count.sh failed: " << out;
+  const int pages = std::atoi(out.c_str());
+  std::cout << "main text: " << pages << " printed pages\n";
+  EXPECT_GE(pages, 5);
+  EXPECT_LE(pages, 20);
 }

@@ -1,0 +1,81 @@
+-- Every figure and table gets a number, so that the prose can point at it and a printed page can be
+-- read on its own. Figs. 1 and 2 keep the paper's numbers (their captions start with them); our own
+-- figures count on from 3, in the order they appear. Tables count from 1 in the main text and as
+-- A.1, A.2, ... in the appendices. A figure with an id, ![...](f.svg){#fig-name}, is referred to as
+-- [Fig.](#fig-name), and the link's text becomes its number. Runs after include.lua, so the tables
+-- of the included reports are counted too. A link to a figure id that does not exist stops the build.
+local labels = {}
+local next_figure, next_table, next_appendix_table = 3, 1, 1
+local in_appendix = false
+local heading = ""
+
+local function prefix(caption, label)
+  local out = { pandoc.Strong({ pandoc.Str(label) }) }
+  if #caption > 0 then out[#out + 1] = pandoc.Space() end
+  for _, c in ipairs(caption) do out[#out + 1] = c end
+  return out
+end
+
+local function figure(block)
+  if block.t ~= "Para" or #block.content ~= 1 or block.content[1].t ~= "Image" then return nil end
+  local image = block.content[1]
+  if #image.caption == 0 then return nil end
+  local first = pandoc.utils.stringify(image.caption[1])
+  local label = first:match("^(Fig%. %d+%.)$")
+  if not label then
+    label = "Fig. " .. next_figure .. "."
+    next_figure = next_figure + 1
+    image.caption = prefix(image.caption, label)
+  end
+  if image.identifier ~= "" then labels[image.identifier] = label:gsub("%.$", "") end
+  return block
+end
+
+local function table_block(tbl)
+  local label
+  if in_appendix then
+    label = "Table A." .. next_appendix_table .. "."
+    next_appendix_table = next_appendix_table + 1
+  else
+    label = "Table " .. next_table .. "."
+    next_table = next_table + 1
+  end
+  local long = tbl.caption.long
+  if #long == 0 then
+    -- A report's table has no caption of its own: it is named by the section that holds it.
+    tbl.caption.long = { pandoc.Plain(prefix({ pandoc.Str(heading) }, label)) }
+  else
+    long[1].content = prefix(long[1].content, label)
+  end
+  return tbl
+end
+
+local function number_blocks(blocks)
+  for i, b in ipairs(blocks) do
+    if b.t == "Header" then
+      if b.level == 1 then in_appendix = b.identifier:match("^appendix") ~= nil end
+      if b.level <= 3 then heading = pandoc.utils.stringify(b.content) end
+    elseif b.t == "Table" then
+      blocks[i] = table_block(b)
+    elseif b.t == "Div" then
+      number_blocks(b.content)
+    else
+      local f = figure(b)
+      if f then blocks[i] = f end
+    end
+  end
+end
+
+function Pandoc(doc)
+  number_blocks(doc.blocks)
+  doc.blocks = doc.blocks:walk({
+    Link = function(link)
+      local id = link.target:match("^#(fig%-[%w%-]+)$")
+      if not id then return nil end
+      if not labels[id] then error("numbering.lua: no figure with id " .. id) end
+      link.content = { pandoc.Str(labels[id]) }
+      return link
+    end,
+  })
+  return doc
+end
