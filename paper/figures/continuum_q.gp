@@ -16,7 +16,8 @@ set multiplot layout 1,2
 set title 'q(θ) on n = 128'
 set ylabel 'force per unit length'
 set yrange [0:50]
-set key top right box opaque
+# Top centre: q is smallest at pi/4, so the key there covers neither curve nor points.
+set key top center box opaque
 plot data using 3:(is('edge', 128, 5)) with lines lw 3 lc rgb '#bbbbbb' title 'series', \
      data using 3:(is('edge-points', 128, 4)) with points pt 7 ps 0.6 lc 2 title 'point rows', \
      data using 3:(is('edge', 128, 4)) with lines lw 1.5 lc 1 title 'spline rows'

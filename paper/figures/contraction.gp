@@ -9,7 +9,10 @@ set datafile separator ','
 set logscale x
 set xlabel 'eps'
 set ylabel 'factor per step'
-set yrange [0:1]
+set yrange [-0.03:1.03]
+# The eps range of the data, with room so that its end points stay off the frame.
+set xrange [6e-5:1.6e-2]
+set format x "%g"
 set grid
 set key outside right top box
 data = 'results/contraction.csv'

@@ -5,7 +5,9 @@
 if (fmt eq 'svg') { set terminal svg size 1000,430 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 1000,430 font 'Helvetica,11' }
 set output out
 set datafile separator ','
+# Top left, in headroom kept free above the lines (they all rise from the origin): the key covers no point.
 set key top left box opaque
+set offsets 0, graph 0.04, graph 0.4, 0
 set xlabel 'obstacle height R'
 set ylabel 'scaled as in the key'
 set grid

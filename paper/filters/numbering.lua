@@ -1,11 +1,11 @@
 -- Every figure and table gets a number, so that the prose can point at it and a printed page can be
--- read on its own. Figs. 1 and 2 keep the paper's numbers (their captions start with them); our own
--- figures count on from 3, in the order they appear. Tables count from 1 in the main text and as
+-- read on its own. Figures count from 1 in the order they appear (the paper's own figures say so in
+-- their captions, "The paper's Fig. 2, redrawn"). Tables count from 1 in the main text and as
 -- A.1, A.2, ... in the appendices. A figure with an id, ![...](f.svg){#fig-name}, is referred to as
 -- [Fig.](#fig-name), and the link's text becomes its number. Runs after include.lua, so the tables
 -- of the included reports are counted too. A link to a figure id that does not exist stops the build.
 local labels = {}
-local next_figure, next_table, next_appendix_table = 3, 1, 1
+local next_figure, next_table, next_appendix_table = 1, 1, 1
 local in_appendix = false
 local heading = ""
 
@@ -20,13 +20,9 @@ local function figure(block)
   if block.t ~= "Para" or #block.content ~= 1 or block.content[1].t ~= "Image" then return nil end
   local image = block.content[1]
   if #image.caption == 0 then return nil end
-  local first = pandoc.utils.stringify(image.caption[1])
-  local label = first:match("^(Fig%. %d+%.)$")
-  if not label then
-    label = "Fig. " .. next_figure .. "."
-    next_figure = next_figure + 1
-    image.caption = prefix(image.caption, label)
-  end
+  local label = "Fig. " .. next_figure .. "."
+  next_figure = next_figure + 1
+  image.caption = prefix(image.caption, label)
   if image.identifier ~= "" then labels[image.identifier] = label:gsub("%.$", "") end
   return block
 end
