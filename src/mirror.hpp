@@ -26,7 +26,8 @@ std::string describe(Mirrors m);
 // The mirrors of the scene on the whole grid `whole`: a mirror line must be a grid line (an even
 // number of cells across), the edge points of the sampling must map onto edge points, and the
 // obstacle at every node, Gauss point and edge point, and the load at every Gauss point (where F
-// samples it), must equal their values at the mirror images to 1e-12 of their largest size.
+// samples it), must equal their values at the mirror images to 1e-12 of each pair's own size
+// (plus 1e-15 of the field's largest, for values near zero).
 Mirrors find_mirrors(const Grid& whole, const SamplingSpec& spec, const Field& obstacle, const Field& load);
 
 // The part of `whole` that the mirrors leave: half the cells across each mirror line, the line its

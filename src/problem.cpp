@@ -37,6 +37,7 @@ void check_obstacle_on_boundary(const Grid& g, const Field& obstacle) {
     check(0.0, g.ly() - y);
   }
   if (g.mirror_x) check(g.lx(), 0.0);  // the bottom edge's far end, which the right edge's loop no longer visits
+  if (g.mirror_y && !g.mirror_x) check(g.lx(), g.ly());  // the right edge's far end, which the top edge's loop no longer visits
 }
 
 double obstacle_on_edge(const Field& obstacle, double x, double y, double nx, double ny, double h) {

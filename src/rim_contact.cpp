@@ -649,7 +649,7 @@ RimSeriesOptions rim_level(int level, bool extended) {
 }
 
 RimAnswer rim_answer(const RimScene& s, int levels, bool extended, int first) {
-  if (levels < 2) throw std::invalid_argument("rim_answer: levels must be >= 2");
+  if (levels < 3) throw std::invalid_argument("rim_answer: levels must be >= 3 (a bar is claimed only once it has shrunk)");
   if (first < 0 || first > levels - 3) throw std::invalid_argument("rim_answer: first must leave three levels");
   RimAnswer a;
   // The finest level first: its peak, found by a search over the plate, starts the coarser levels'

@@ -234,7 +234,7 @@ Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge, 
   if (how.kind == EdgeRows::Kind::Splines) {
     if (how.degree < 1 || how.degree > 5) throw std::invalid_argument("--edge-rows: the spline degree must be 1 ... 5");
     if (!(how.cells >= 0 && std::isfinite(how.cells)))
-      throw std::invalid_argument("--edge-rows: the knot spacing in cells must be finite and > 0");
+      throw std::invalid_argument("--edge-rows: the knot spacing in cells must be finite and >= 0 (0: the automatic spacing)");
     if (!(has_edge(kind) && edge.kind == EdgeCurve::Kind::Circle))
       throw std::invalid_argument("--edge-rows spline needs edge sampling of a circle");
   }

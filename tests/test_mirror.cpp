@@ -155,3 +155,19 @@ TEST(Mirror, PenaltyErrorBoundOnTheQuarterIsTheWholePlates) {
     EXPECT_NEAR(bq.bound, bw.bound, 1e-10 * bw.bound);
   }
 }
+
+// An obstacle that plunges far below the plate towards its corners must not make an asymmetry
+// near the contact look like round-off: each pair of images is compared at its own size.
+TEST(Mirror, AnAsymmetryIsSeenWhereTheObstacleIsSmallEvenIfItIsLargeElsewhere) {
+  const Field deep = [](double x, double y) {
+    const double r2 = (x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5);
+    return 0.06 - 1000 * r2 * r2 + (r2 < 0.01 ? 1e-10 * x : 0.0);
+  };
+  EXPECT_FALSE(find_mirrors(make_grid(16), SamplingSpec{SamplingKind::Nodes}, deep, kNoLoad).x);
+  const Field deep_symmetric = [](double x, double y) {
+    const double r2 = (x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5);
+    return 0.06 - 1000 * r2 * r2;
+  };
+  const Mirrors both = find_mirrors(make_grid(16), SamplingSpec{SamplingKind::Nodes}, deep_symmetric, kNoLoad);
+  EXPECT_TRUE(both.x && both.y);
+}
