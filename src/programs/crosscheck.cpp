@@ -247,6 +247,11 @@ void describe(std::ostream& md, const Setup& u, const Runs& runs) {
   runs_table(md, runs, {&runs.ff, &runs.edge}, true);
 }
 
+// A limit and its bar as printed: to the digits round-off leaves alone, and never below it. The
+// same bar in every table that names the limit, and in the tolerance of the verdict.
+std::string limit_value(const Extrapolation& e) { return fmt_above(e.limit, e.limit_noise, 10, 'g'); }
+std::string limit_bar(const Extrapolation& e) { return fmt_up(std::max(e.bar, e.bar_noise)); }
+
 // Each code's observed orders and its limit, for every quantity.
 void convergence(std::ostream& md, const Setup& u, const Runs& runs,
                  const std::vector<const std::vector<CheckValues>*>& series) {
@@ -257,13 +262,9 @@ void convergence(std::ostream& md, const Setup& u, const Runs& runs,
       if (q.held || e.orders.empty() || !std::isfinite(e.limit)) continue;
       md << "| " << q.name << " | " << label(*ser, runs) << " | ";
       for (size_t i = 0; i < e.orders.size(); ++i) md << (i ? ", " : "") << format_order(e.orders[i], e.order_noise[i]);
-      md << " | " << verdict(e) << " |\n";
+      md << " | " << verdict(e, limit_bar(e)) << " |\n";
     }
 }
-
-// A limit and its bar as printed: to the digits round-off leaves alone, and never below it.
-std::string limit_value(const Extrapolation& e) { return fmt_above(e.limit, e.limit_noise, 10, 'g'); }
-std::string limit_bar(const Extrapolation& e) { return fmt_up(std::max(e.bar, e.bar_noise)); }
 std::string limit_text(const Extrapolation& e) {
   return limit_value(e) + " +- " + limit_bar(e) + (e.steady ? "" : " (not steady)");
 }

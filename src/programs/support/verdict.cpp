@@ -14,8 +14,10 @@ std::string format_order(double p, double noise) {
   return fmt(("%." + std::to_string(std::min(decimals, 2)) + "f").c_str(), p);
 }
 
-std::string verdict(const Extrapolation& e) {
-  const std::string limit = fmt_above(e.limit, e.limit_noise, 10, 'g'), bar = fmt_above(e.bar, e.bar_noise, 2);
+std::string verdict(const Extrapolation& e) { return verdict(e, fmt_above(e.bar, e.bar_noise, 2)); }
+
+std::string verdict(const Extrapolation& e, const std::string& bar) {
+  const std::string limit = fmt_above(e.limit, e.limit_noise, 10, 'g');
   const size_t t = e.orders.size();
   if (e.steady) return "order " + format_order(e.orders[t - 1], e.order_noise[t - 1]) + ", limit " + limit + " +- " + bar;
   const std::string fallback = "; finest value " + limit + " +- " + bar + " (last increment)";

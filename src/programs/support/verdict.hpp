@@ -10,8 +10,10 @@ namespace plate {
 std::string format_order(double p, double noise);
 
 // "order 2.71, limit ... +- ..." where the order is steady; otherwise why not, and the finest value
-// with its last increment.
+// with its last increment. The second form prints the bar as the caller gives it, so that a report
+// can state one bar for a limit wherever it names it.
 std::string verdict(const Extrapolation& e);
+std::string verdict(const Extrapolation& e, const std::string& bar);
 
 // The bar as a bare number: where it is within the noise, the noise's bound.
 std::string bar_number(const Extrapolation& e, int digits = 3);
