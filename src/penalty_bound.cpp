@@ -13,9 +13,10 @@ namespace plate {
 
 int centre_value_dof(const Grid& g) {
   if (g.unknowns() == 0) return -1;
-  // On a part of the plate (mirror.hpp) the plate's centre is the node on its mirror lines: there
-  // (K^{-1})_cc, with the part's quarter weight at that node, is the whole plate's times four, and
-  // ||r||_{K^{-1}} the whole's over two, so the bound is the whole plate's.
+  // On a part of the plate (mirror.hpp) the plate's centre is the node on its mirror lines. With
+  // the part's weights, (K^{-1})_cc there is the whole plate's times the number of parts (four for
+  // a quarter, two for a half) and ||r||_{K^{-1}} the whole's over its square root, so the bound
+  // is the whole plate's.
   const int i = g.mirror_x ? g.nx : std::clamp((g.nx + 1) / 2, 1, g.nx - 1);
   const int j = g.mirror_y ? g.ny : std::clamp((g.ny + 1) / 2, 1, g.ny - 1);
   return g.dof(i, j, kW);

@@ -79,8 +79,11 @@ Refinement refine(const Problem& p, const Cholesky& chol, const std::vector<int>
     // A refinement corrects round-off; a correction of a thousandth or more (or not finite) means
     // the held rows' block G_AA is near-singular and the step is noise amplified, not a correction.
     const bool small = std::isfinite(size) && std::isfinite(size_mu) && size < kLargestCorrection && size_mu < kLargestCorrection;
+    // A bad step is not recorded: an empty record means "not refined", and callers then fall back
+    // to the unrefined solve's round-off estimate instead of reading a floor from noise.
+    if (!small) break;
     sizes.w.push_back(size), sizes.mu.push_back(size_mu);
-    if (!shrinking || !small) break;  // the residual's own round-off, or a bad step: not applied
+    if (!shrinking) break;  // the residual's own round-off: this correction is noise, not applied
     w += dw;
     if (m > 0) mu += dmu;
     if (size <= 4 * DBL_EPSILON) break;

@@ -611,7 +611,7 @@ RimPremise check_premise(const RimSeries& s, int angles, double tolerance) {
   double max_q = 0;
   // A symmetric scene's series has the symmetry exactly (its basis is the symmetric one), so the
   // sector that the mirrors leave, the angles in it and its edges, sees every value once.
-  const RimSymmetry sym = symmetry_of(sc);
+  const RimSymmetry sym = s.symmetry;  // the basis's own symmetry, not the scene's
   const int sector = sym == RimSymmetry::Square ? (angles + 7) / 8 : sym == RimSymmetry::Mirrors ? (angles + 3) / 4 : angles - 1;
   for (int i = 0; i <= sector; ++i) {
     const double th = 2 * M_PI * i / angles, q = s.q(th);

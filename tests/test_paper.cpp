@@ -309,10 +309,10 @@ TEST(Paper, TheFirstScreenHoldsTheAnswerAndHowToReproduceIt) {
 // The main text (everything before the first appendix) prints on at most twenty pages of
 // Chromium's default size, as a reader printing results/paper.html would see it.
 TEST(Paper, TheMainTextPrintsOnTwentyPagesAtMost) {
-  const std::string command = "cd '" + kRoot.string() + "' && scripts/page_count.sh results/paper.html";
+  const std::string command = "cd '" + kRoot.string() + "' && scripts/page_count.sh results/paper.html 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   ASSERT_NE(pipe, nullptr);
-  char buffer[64] = {0};
+  char buffer[512] = {0};
   const std::string out = fgets(buffer, sizeof buffer, pipe) ? buffer : "";
   ASSERT_EQ(pclose(pipe), 0) << "scripts/page_count.sh failed: " << out;
   const int pages = std::atoi(out.c_str());

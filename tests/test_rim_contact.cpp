@@ -16,6 +16,7 @@
 #include "gauss.hpp"
 #include "paper_case.hpp"
 #include "rim_contact.hpp"
+#include "rim_report.hpp"
 
 using namespace plate;
 
@@ -419,4 +420,20 @@ TEST(RimContact, RefusesScenesThatCannotHaveARimContact) {
   o = {}, o.oversampling = 0.5;
   EXPECT_THROW(solve_rim_series(RimScene{}, o), std::invalid_argument);
   EXPECT_THROW(solve_clamped_plate(0, 1, 1), std::invalid_argument);
+}
+
+// The search for max |m12| (quarter lattice, then shrinking patterns) lands at or above a plain
+// brute-force search of the whole plate, and within its lattice's reach of it, on a square, a wide
+// and a tall rectangle (the tall one is where a pattern scaled by lx alone missed its rows).
+TEST(RimContact, TheMaxM12SearchFindsAtLeastWhatABruteForceSearchFinds) {
+  for (const RimScene sc : {RimScene{}, RimScene{1.5, 1, 0.75, 0.5, 0.25, 0.0625, 0}, RimScene{1, 1.5, 0.5, 0.75, 0.25, 0.0625, 0}}) {
+    const RimSeries s = solve_rim_series(sc, rim_level(3));
+    double brute = 0;
+    const int k = 240;
+    for (int i = 0; i <= k; ++i)
+      for (int j = 0; j <= k; ++j) brute = std::max(brute, std::abs(s.moments(sc.lx * i / k, sc.ly * j / k, 0.3).m12));
+    const double found = rim_max_abs_m12(s, 0.3);
+    EXPECT_GE(found, brute * (1 - 1e-12)) << sc.lx << " x " << sc.ly;
+    EXPECT_LE(found, brute * (1 + 1e-3)) << sc.lx << " x " << sc.ly;
+  }
 }

@@ -41,15 +41,16 @@ double rim_max_abs_m12(const RimSeries& s, double nu, int k) {
   };
   // |m12| is unchanged by a mirror of the scene (m12 changes sign), so a symmetric scene's lower
   // left quarter holds its largest value.
-  const int last = symmetry_of(s.scene) == RimSymmetry::None ? k : k / 2;
+  const int last = s.symmetry == RimSymmetry::None ? k : k / 2;
   for (int i = 0; i <= last; ++i)
     for (int j = 0; j <= last; ++j) look(s.scene.lx * i / k, s.scene.ly * j / k);
   // Then about the best lattice point, on lattices five times finer each round (m12 is continuous,
   // its gradient may jump across the rim: the search closes in on the point, not on a zero slope).
-  for (double step = s.scene.lx / k / 5; step > 1e-9 * s.scene.lx; step /= 5) {
+  // Each axis steps by its own lattice spacing, so a round always reaches the neighbouring rows.
+  for (double sx = s.scene.lx / k / 5, sy = s.scene.ly / k / 5; sx > 1e-9 * s.scene.lx; sx /= 5, sy /= 5) {
     const double x0 = bx, y0 = by;
     for (int i = -6; i <= 6; ++i)
-      for (int j = -6; j <= 6; ++j) look(x0 + i * step, y0 + j * step);
+      for (int j = -6; j <= 6; ++j) look(x0 + i * sx, y0 + j * sy);
   }
   return best;
 }
