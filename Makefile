@@ -158,7 +158,8 @@ results/versions.csv: scripts/deps.sh | deps
 	@test $$(grep -c . $@.tmp) -eq $$(( $(words $(VERSIONED)) + 1 )) || { echo "versions.csv: dpkg-query did not find every package of VERSIONED" >&2; rm -f $@.tmp; exit 1; }
 	mv $@.tmp $@
 
-$(NUMBERS) &: $(BUILD)/prose_numbers $(RESULTS) $(CONTINUUM_DATA) $(CROSSCHECK) $(HARD_CASES) $(BENCH) results/versions.csv reference/plate_constants.csv
+$(NUMBERS) &: $(BUILD)/prose_numbers $(RESULTS) $(RIM_SERIES) $(CONTINUUM_DATA) $(CROSSCHECK) $(HARD_CASES) $(BENCH) results/versions.csv \
+               $(wildcard results/rebuild_times.csv) reference/plate_constants.csv
 	$(BUILD)/prose_numbers --out results
 
 define render_paper

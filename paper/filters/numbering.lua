@@ -17,6 +17,15 @@ local function prefix(caption, label)
 end
 
 local function figure(block)
+  -- pandoc 3 has a Figure block: its caption gets the number, its image the id.
+  if block.t == "Figure" then
+    local label = "Fig. " .. next_figure .. "."
+    next_figure = next_figure + 1
+    local long = block.caption.long
+    if #long > 0 then long[1].content = prefix(long[1].content, label) end
+    if block.identifier ~= "" then labels[block.identifier] = label:gsub("%.$", "") end
+    return block
+  end
   if block.t ~= "Para" or #block.content ~= 1 or block.content[1].t ~= "Image" then return nil end
   local image = block.content[1]
   if #image.caption == 0 then return nil end
