@@ -8,6 +8,8 @@
 // solve: here element by element, with the element stiffness and every sum in long double (64-bit
 // significand), so the rounded K never enters.
 #pragma once
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <vector>
 
@@ -30,6 +32,13 @@ struct Refinement {
   std::vector<double> w, mu;
   double floor_w() const { return w.empty() ? NAN : w.back(); }
   double floor_mu() const { return mu.empty() ? NAN : mu.back(); }
+  // What round-off can still change in the refined w (any entry) and, relatively, in the forces:
+  // the last correction's size, never below a few units of round-off. Sizes are relative to the
+  // largest entry of the whole vector (slopes included), so w's is scaled by that.
+  double noise_w(const VectorXd& refined) const {
+    return std::max(floor_w(), 4 * DBL_EPSILON) * refined.lpNorm<Eigen::Infinity>();
+  }
+  double relative_noise_mu() const { return std::max(floor_mu(), 4 * DBL_EPSILON); }
 };
 
 // Eq. (D27): refines w and the forces mu on the rows `rows` (those that push; G_AA their block of

@@ -611,9 +611,10 @@ RimPremise check_premise(const RimSeries& s, int angles, double tolerance) {
   double max_q = 0;
   // A symmetric scene's series has the symmetry exactly (its basis is the symmetric one), so the
   // sector that the mirrors leave, the angles in it and its edges, sees every value once.
-  const RimSymmetry sym = s.symmetry;  // the basis's own symmetry, not the scene's
-  const int sector = sym == RimSymmetry::Square ? (angles + 7) / 8 : sym == RimSymmetry::Mirrors ? (angles + 3) / 4 : angles - 1;
-  for (int i = 0; i <= sector; ++i) {
+  // The basis's own symmetry, not the scene's: the circle falls into this many equal sectors.
+  const int parts = s.symmetry == RimSymmetry::Square ? 8 : s.symmetry == RimSymmetry::Mirrors ? 4 : 1;
+  const auto last_in_sector = [&](int around) { return parts == 1 ? around - 1 : (around + parts - 1) / parts; };
+  for (int i = 0; i <= last_in_sector(angles); ++i) {
     const double th = 2 * M_PI * i / angles, q = s.q(th);
     max_q = std::max(max_q, std::abs(q));
     if (q < p.min_q) p.min_q = q, p.theta_min_q = th;
@@ -622,9 +623,8 @@ RimPremise check_premise(const RimSeries& s, int angles, double tolerance) {
   std::vector<double> radii;
   for (int k = 0; k < 24; ++k) radii.push_back(sc.radius * k / 24);
   radii.push_back(sc.radius * (1 - 1e-3));  // the plate leaves the rim inward with w_r <= 0
-  const int ring_sector = sym == RimSymmetry::Square ? 16 : sym == RimSymmetry::Mirrors ? 32 : 127;
   for (double r : radii)
-    for (int i = 0; i <= (r == 0 ? 0 : ring_sector); ++i) {
+    for (int i = 0; i <= (r == 0 ? 0 : last_in_sector(128)); ++i) {
       const double x = sc.cx + r * std::cos(2 * M_PI * i / 128), y = sc.cy + r * std::sin(2 * M_PI * i / 128);
       const double d = s.w(x, y) - sc.height;
       if (d < p.min_w_minus_R) p.min_w_minus_R = d, p.x_min = x, p.y_min = y;

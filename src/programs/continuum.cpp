@@ -104,9 +104,8 @@ Row solve_one(const Variant& v, int n, const PaperScene& scene) {
   if (!refined.w.empty()) {
     // A refined answer (D27) is the same on every machine to the refinement's floor, in w and in the
     // forces alike: the corrections' size once they stop shrinking.
-    const double w_size = x.result.w.lpNorm<Eigen::Infinity>(), floor_w = std::max(refined.floor_w(), 4 * DBL_EPSILON);
-    const double floor_mu = std::max(refined.floor_mu(), 4 * DBL_EPSILON);
-    row.noise_max_w = row.noise_w_mid = row.noise_w_diag = row.noise_m12 = floor_w * w_size;
+    const double floor_mu = refined.relative_noise_mu();
+    row.noise_max_w = row.noise_w_mid = row.noise_w_diag = row.noise_m12 = refined.noise_w(x.result.w);
     row.noise_force = floor_mu * row.force, row.noise_mean_line = floor_mu * row.mean_line;
     row.noise_line = floor_mu * std::max(std::abs(row.line.max), std::abs(row.line.min));
     row.noise_q0 = row.noise_q45 = row.noise_line;

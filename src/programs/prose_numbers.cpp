@@ -253,15 +253,14 @@ void rim_series_numbers(Numbers& num, const std::string& results) {
   }
   // The plate alone (results/uniform_load.csv): the finite elements' error at every n, round-off on the finest.
   const CsvTable u = read_csv_table(results + "/uniform_load.csv");
-  for (std::size_t r = 0; r < u.rows.size(); ++r)
-    if (u.text(r, "n") != "0")
-      num.put("fe.uniform_error_" + u.text(r, "n"), u.text(r, "relative_error").substr(u.number(r, "relative_error") < 0),
-              "results/uniform_load.csv n = " + u.text(r, "n") + ": |relative_error|");
-  for (std::size_t r = 0; r < u.rows.size(); ++r)
-    if (u.text(r, "n") != "0")
-      num.put("fe.uniform_refined_error_" + u.text(r, "n"),  // its magnitude; a bound "< B" stays as printed
-              u.text(r, "relative_error_refined").substr(u.text(r, "relative_error_refined").rfind('-', 0) == 0),
-              "results/uniform_load.csv n = " + u.text(r, "n") + ": |relative_error_refined|");
+  // A printed error's magnitude: its sign dropped; a bound "< B" stays as printed.
+  const auto magnitude = [](const std::string& v) { return v.substr(v.rfind('-', 0) == 0); };
+  for (std::size_t r = 0; r < u.rows.size(); ++r) {
+    const std::string n = u.text(r, "n"), src = "results/uniform_load.csv n = " + n + ": |";
+    if (n == "0") continue;
+    num.put("fe.uniform_error_" + n, magnitude(u.text(r, "relative_error")), src + "relative_error|");
+    num.put("fe.uniform_refined_error_" + n, magnitude(u.text(r, "relative_error_refined")), src + "relative_error_refined|");
+  }
   const CsvTable e = read_csv_table(results + "/continuum_error.csv");
   const std::vector<std::size_t> edge = e.where("sampling", "edge");
   if (edge.size() < 2) throw std::runtime_error(e.path + ": fewer than two edge rows");

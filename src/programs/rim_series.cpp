@@ -71,11 +71,12 @@ std::string uniform_load_csv(int finest) {
     const Problem p = make_problem(make_grid(n), SamplingKind::Nodes, none, one);
     Cholesky chol;
     chol.factorize(p.K);
-    const double w = evaluate(p.grid, chol.solve(p.F), 0.5, 0.5).w;
+    VectorXd solved = chol.solve(p.F), none;
+    const double w = evaluate(p.grid, solved, 0.5, 0.5).w;
     // Printed above what another machine's summation order changes (u n^3, exact_solve_roundoff).
     const double noise = exact_solve_roundoff(n, w);
-    Refinement record;
-    const double refined = evaluate(p.grid, solve_refined(p, chol, &record), 0.5, 0.5).w;
+    const Refinement record = refine(p, chol, {}, Eigen::MatrixXd(), none, solved);  // refines `solved` in place
+    const double refined = evaluate(p.grid, solved, 0.5, 0.5).w;
     // What the refinement's last correction still moved: the floor to which it is reproducible.
     const double floor = std::max(record.floor_w(), 1e-16) * std::abs(refined);
     o << n << ',' << fmt_above(w, noise, 10, 'g') << ',' << fmt_above((w - exact) / exact, noise / exact, 3) << ','

@@ -27,6 +27,9 @@ std::string bar(double v) {
   std::snprintf(b, sizeof b, "%.2g", v);
   return b;
 }
+// The finest truncation's peak, found once by rim_answer's search.
+RimPeak finest_peak(const RimAnswer& a) { return {a.rows.back().x_max, a.rows.back().y_max, a.rows.back().max_w}; }
+
 }  // namespace
 
 std::string rim_digits(double v, double bar) {
@@ -71,8 +74,7 @@ std::string rim_line_csv(const RimSeries& s, int angles) {
 std::string rim_summary_json(const RimReport& r) {
   const RimAnswer& a = *r.answer;
   const RimSeries& s = a.finest;
-  // The finest truncation's peak, found once by rim_answer's search.
-  const RimPeak peak{a.rows.back().x_max, a.rows.back().y_max, a.rows.back().max_w};
+  const RimPeak peak = finest_peak(a);
   Json j;
   j["config"] = Json::object();
   for (const auto& [k, v] : r.config) j["config"][k] = v;
@@ -117,8 +119,7 @@ std::string rim_summary_json(const RimReport& r) {
 std::string rim_summary_text(const RimReport& r) {
   const RimAnswer& a = *r.answer;
   const RimSeries& s = a.finest;
-  // The finest truncation's peak, found once by rim_answer's search.
-  const RimPeak peak{a.rows.back().x_max, a.rows.back().y_max, a.rows.back().max_w};
+  const RimPeak peak = finest_peak(a);
   std::ostringstream o;
   o << (r.converged ? "converged" : "NOT CONVERGED: " + r.message) << "\n";
   o << "series: " << a.rows.size() << " truncations, the last with " << a.rows.back().unknowns
