@@ -2,7 +2,6 @@
 #include "crosscheck.hpp"
 
 #include <algorithm>
-#include <cfloat>
 #include <cmath>
 #include <iterator>
 #include <stdexcept>
@@ -48,9 +47,8 @@ CheckValues solve_ours(int n, const SamplingSpec& spec, const Field& phi, const 
   // A refined answer is the same on every machine to its last correction, far below the estimate
   // above for the unrefined solve (the same rule as the continuum study's).
   if (const Refinement& refined = x.levels.back().refinement; !refined.w.empty()) {
-    const double floor_w = std::max(refined.floor_w(), 4 * DBL_EPSILON) * v.max_w;
-    for (double& noise : v.noise_w) noise = floor_w;
-    v.force_floor = std::max(refined.floor_mu(), 4 * DBL_EPSILON);
+    for (double& noise : v.noise_w) noise = refined.noise_w(x.w);
+    v.force_floor = refined.relative_noise_mu();
   }
   v.force = total_contact_force(p, x.lambda);
   v.mean_line = v.force / (2 * M_PI * radius);  // with f = 0 the whole push is on the rim
