@@ -16,23 +16,25 @@ local function prefix(caption, label)
   return out
 end
 
+-- The next figure's label, "Fig. N.", remembered under the figure's id for the links to it.
+local function next_figure_label(id)
+  local label = "Fig. " .. next_figure .. "."
+  next_figure = next_figure + 1
+  if id ~= "" then labels[id] = label:gsub("%.$", "") end
+  return label
+end
+
 local function figure(block)
-  -- pandoc 3 has a Figure block: its caption gets the number, its image the id.
+  -- pandoc 3 has a Figure block; pandoc 2 a paragraph holding one captioned image.
   if block.t == "Figure" then
-    local label = "Fig. " .. next_figure .. "."
-    next_figure = next_figure + 1
-    local long = block.caption.long
+    local label, long = next_figure_label(block.identifier), block.caption.long
     if #long > 0 then long[1].content = prefix(long[1].content, label) end
-    if block.identifier ~= "" then labels[block.identifier] = label:gsub("%.$", "") end
     return block
   end
   if block.t ~= "Para" or #block.content ~= 1 or block.content[1].t ~= "Image" then return nil end
   local image = block.content[1]
   if #image.caption == 0 then return nil end
-  local label = "Fig. " .. next_figure .. "."
-  next_figure = next_figure + 1
-  image.caption = prefix(image.caption, label)
-  if image.identifier ~= "" then labels[image.identifier] = label:gsub("%.$", "") end
+  image.caption = prefix(image.caption, next_figure_label(image.identifier))
   return block
 end
 
