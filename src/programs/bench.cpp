@@ -474,8 +474,7 @@ int main(int argc, char** argv) {
       std::cout << (o.ok ? fmt(" %.3g s", o.v.at("seconds")) + fmt(", peak %.0f MiB", o.peak_mib) : " FAILED") << "\n";
       if (!o.ok || budget_exempt(job.solver)) continue;
       const double t = o.v.at("seconds"), before = last_seconds.count(series) ? last_seconds[series] : NAN;
-      const double next = std::isfinite(before) && before > 0 ? t * std::max(t / before, 1.0) : t;
-      if (next > l.budget) over_budget.insert(series);
+      if (predicted_next_seconds(before, t) > l.budget) over_budget.insert(series);
       last_seconds[series] = t;
     }
     for (const Outcome& o : outcomes)

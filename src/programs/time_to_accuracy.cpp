@@ -348,8 +348,7 @@ int main(int argc, char** argv) {
         std::cerr << fmt(" %.3g s", r.seconds) << ", exit " << r.status << "\n";
         const double before = runs.size() && runs.back().config == &c ? runs.back().seconds : NAN;
         runs.push_back(r);
-        const double next = std::isfinite(before) && before > 0 ? r.seconds * std::max(r.seconds / before, 1.0) : r.seconds;
-        if (next > kBudgetSeconds && &c != &configs.front()) break;
+        if (predicted_next_seconds(before, r.seconds) > kBudgetSeconds && &c != &configs.front()) break;
       }
     // The mirror lines' saving, and the series' own time, each the median of alternating runs.
     const Config part{"part", "", ratio_n, false, ""}, whole{"whole", "--symmetry none", ratio_n, false, ""},
