@@ -54,7 +54,7 @@ struct ExactLevel {
   int primal_steps = 0;        // steps of the monotone fallback (0 unless it was needed)
   int factorizations = 0;
   long correction_columns = 0; // solves spent on small active-set changes
-  Refinement refinement;       // dual solver: the refinement's corrections (D27); empty if not refined
+  Refinement refinement;       // dual solver: the refinement's corrections (D22); empty if not refined
   double seconds = 0;
 };
 

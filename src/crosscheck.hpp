@@ -34,7 +34,7 @@ struct CheckValues {
   std::vector<double> w_at;  // at the check points, in order
   // Ours: the round-off estimates of max w and of w at the check points (roundoff.hpp); empty for FreeFEM.
   std::vector<double> noise_w;  // max w first, then the check points
-  // Ours, when the solve was refined (D27): the relative size of the forces' last correction, the
+  // Ours, when the solve was refined (D22): the relative size of the forces' last correction, the
   // floor to which they are the same on every machine; NaN otherwise (then u n^3 is assumed).
   double force_floor = NAN;
   double mean_line = 0, q0 = 0, q45 = 0;  // line load on the rim: mean, and fitted q(0), q(pi/4)

@@ -13,7 +13,7 @@ void check(const DiskPunch& s) {
 }
 
 // @region disk-punch
-// Eq. (D18): the solution of the clamped conditions w(a) = w'(a) = 0, the contact w(b) = R from
+// Eq. (D24): the solution of the clamped conditions w(a) = w'(a) = 0, the contact w(b) = R from
 // either side, and w', w'' continuous across the rim (the line load jumps the shear only).
 DiskPunch::Coefficients DiskPunch::coefficients() const {
   check(*this);

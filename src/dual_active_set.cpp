@@ -61,7 +61,7 @@ std::vector<int> violated_rows(const VectorXd& gap, const NodeSet& in_schur, dou
   return v;
 }
 
-// The refinement (D27) of the answer on the rows that push.
+// The refinement (D22) of the answer on the rows that push.
 Refinement refine_held(const Problem& p, const Cholesky& chol, const Schur& schur, VectorXd& mu, VectorXd& w) {
   std::vector<int> held, rows;  // positions in G, and their sample rows
   for (int i = 0; i < mu.size(); ++i)

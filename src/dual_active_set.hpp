@@ -1,7 +1,7 @@
 // The exact constraint for any sampling: w minimises 1/2 w^T K w - F^T w subject to S w >= phi,
 // whatever the rows of S are (Gauss points, points on the obstacle's edge, nodes, or a mix).
 // One factorisation of K; the rows that may touch get a column of G = S K^{-1} S^T each, and the
-// small dense dual problem on them is solved by the dual active-set method (D15).
+// small dense dual problem on them is solved by the dual active-set method (D20).
 #pragma once
 #include "active_set.hpp"
 

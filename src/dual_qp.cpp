@@ -57,7 +57,7 @@ int most_violated(const Eigen::VectorXd& gap, const std::vector<char>& in_active
 }  // namespace
 
 // @region dual-active-set
-// Eq. (D15): Goldfarb-Idnani's dual active-set method on G = S K^{-1} S^T.
+// Eq. (D20): Goldfarb-Idnani's dual active-set method on G = S K^{-1} S^T.
 DualQPResult solve_dual_qp(const Eigen::MatrixXd& G, const Eigen::VectorXd& b, double tol, int max_steps) {
   const int m = static_cast<int>(b.size());
   DualQPResult r;

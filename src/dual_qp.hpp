@@ -23,7 +23,7 @@ struct DualQPResult {
   std::string message;     // why not, when not ok
 };
 
-// Eq. (D15): the dual active-set method. A row is violated when its gap is below -tol.
+// Eq. (D20): the dual active-set method. A row is violated when its gap is below -tol.
 DualQPResult solve_dual_qp(const Eigen::MatrixXd& G, const Eigen::VectorXd& b, double tol, int max_steps);
 
 }  // namespace plate

@@ -19,7 +19,7 @@ struct LineForce {
   // square's eight symmetries allow for a function on a circle about the square's centre (fewer
   // when M points cannot tell them apart: 4 k <= M / 2).
   std::vector<double> fourier;
-  // Spline rows (D25): q is the function sum_j c_j B_p((theta - theta_j) / Delta) with the knots
+  // Spline rows (D12): q is the function sum_j c_j B_p((theta - theta_j) / Delta) with the knots
   // theta_j = 2 pi j / M, Delta = 2 pi / M, and c_j the rows' multipliers; theta and q above are its
   // values at the knots. Degree 0: point rows, q known at the points only.
   int spline_degree = 0;
@@ -47,7 +47,7 @@ LineForce binned_line_force(const Problem& p, const VectorXd& lambda, const Edge
 // q at the edge point nearest the angle theta (circles only). Point values scatter by about 10%
 // about a smooth curve, because the finite element space cannot resolve a load at the scale of h.
 double line_force_at(const LineForce& f, double theta);
-// The line load at any angle: the spline's value (D25), or for point rows the nearest point's.
+// The line load at any angle: the spline's value (D12), or for point rows the nearest point's.
 double line_force_value(const LineForce& f, double theta);
 // The largest distance of the line load from a reference q(theta): for spline rows over `angles`
 // equal angles and the knots, for point rows at the points. NaN without angles (a polygon).

@@ -13,7 +13,7 @@ namespace plate {
 using Extended = long double;
 
 // @region extended-residual
-// Eq. (D26): the residual with K never assembled: each element's K_e w_e in long double.
+// Eq. (D21): the residual with K never assembled: each element's K_e w_e in long double.
 VectorXd extended_residual(const Problem& p, const VectorXd& w, const VectorXd& mu) {
   const Grid& g = p.grid;
   const Eigen::Matrix<Extended, 16, 16> Ke = bfs_stiffness_extended(static_cast<Extended>(g.h));
@@ -50,7 +50,7 @@ VectorXd extended_gap(const Problem& p, const VectorXd& w, const std::vector<int
 constexpr double kLargestCorrection = 1e-3;
 
 // @region refinement
-// Eq. (D27): with the residuals in long double (D26), the double factor of K and a factor of G_AA,
+// Eq. (D22): with the residuals in long double (D21), the double factor of K and a factor of G_AA,
 //   z = K^{-1} r_w,   G_AA dmu = r_A - S_A z,   dw = z + K^{-1} S_A^T dmu.
 // Each step shrinks the error by about u cond(K) (some 1e-5 on n = 512).
 Refinement refine(const Problem& p, const Cholesky& chol, const std::vector<int>& rows, const Eigen::MatrixXd& G_AA,

@@ -18,7 +18,7 @@
 
 namespace plate {
 
-// Eq. (D26): F + S^T mu - K w, mu a force per sample row, rounded to double only at the end.
+// Eq. (D21): F + S^T mu - K w, mu a force per sample row, rounded to double only at the end.
 VectorXd extended_residual(const Problem& p, const VectorXd& w, const VectorXd& mu);
 
 // phi_q - (S w)_q at the rows `rows`, each sum in long double.
@@ -41,14 +41,14 @@ struct Refinement {
   double relative_noise_mu() const { return std::max(floor_mu(), 4 * DBL_EPSILON); }
 };
 
-// Eq. (D27): refines w and the forces mu on the rows `rows` (those that push; G_AA their block of
+// Eq. (D22): refines w and the forces mu on the rows `rows` (those that push; G_AA their block of
 // G = S K^{-1} S^T) so that K w - S_A^T mu = F and S_A w = phi_A hold to the residual's precision.
 // `chol` holds K's factor. Stops when a correction is down to a few units of round-off of w, or
 // stops shrinking.
 Refinement refine(const Problem& p, const Cholesky& chol, const std::vector<int>& rows, const Eigen::MatrixXd& G_AA,
                   VectorXd& mu, VectorXd& w);
 
-// The plate with no constraint, K w = F, refined: eq. (D27) with no rows.
+// The plate with no constraint, K w = F, refined: eq. (D22) with no rows.
 VectorXd solve_refined(const Problem& p, const Cholesky& chol, Refinement* record = nullptr);
 
 }  // namespace plate

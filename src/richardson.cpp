@@ -17,7 +17,7 @@ double richardson(double b, double c, double p) { return c + (c - b) / (std::pow
 }  // namespace
 
 // @region richardson
-// Eq. (D16): observed orders, and the limit where the order is steady over the last four grids.
+// Eq. (D13): observed orders, and the limit where the order is steady over the last four grids.
 Extrapolation extrapolate(const std::vector<double>& v, const std::vector<double>& noise, double spread) {
   Extrapolation e;
   const int m = static_cast<int>(v.size());

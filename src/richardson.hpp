@@ -17,7 +17,7 @@ struct Extrapolation {
   double limit_noise = 0, bar_noise = 0;
 };
 
-// Eq. (D16): v_h = v + C h^p + ..., p from successive increments, v ~ v_h/4 + d / (2^p - 1).
+// Eq. (D13): v_h = v + C h^p + ..., p from successive increments, v ~ v_h/4 + d / (2^p - 1).
 // noise[k] bounds the round-off in values[k] (empty: none).
 // Two observed orders within this of each other are called steady.
 constexpr double kSteadySpread = 0.3;

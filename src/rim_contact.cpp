@@ -1,16 +1,16 @@
-// The rim-contact series: the line-load fields of (D20), the clamped-corner functions of (D21),
-// Trefftz polynomials and the particular solution, fitted by least squares (D22).
+// The rim-contact series: the line-load fields of (D15), the clamped-corner functions of (D16),
+// Trefftz polynomials and the particular solution, fitted by least squares (D17).
 //
 // If the plate touches the cylinder along the rim Gamma (r = a about its centre) and nowhere else,
 // the contact force is a line load q(theta) on Gamma and the problem is linear:
 //   Lap^2 w = f + q delta_Gamma in the plate, w = dw/dn = 0 on its edge, w = R on Gamma.
 // With q = sum_m q_m cos(m theta) (+ sines), w is a sum of known fields:
 //   w = f p + sum_m q_m a^3 H_m(r / a) cos(m theta) + sum_j c_j T_j,
-// p = rho^4 / 64 (Lap^2 p = 1), H_m the profile (D20) whose third derivative jumps by one at
+// p = rho^4 / 64 (Lap^2 p = 1), H_m the profile (D15) whose third derivative jumps by one at
 // r = a (so that each field is the line load cos(m theta) per unit length and nothing else),
 // and T_j biharmonic in the whole plate: Trefftz polynomials Re, Im zeta^n and |zeta|^2 zeta^n
 // about the plate's centre (zeta scaled by the half-diagonal, |zeta| <= 1 on the plate), and the
-// clamped-corner functions (D21). The unknowns q_m, c_j come from least squares on the clamped
+// clamped-corner functions (D16). The unknowns q_m, c_j come from least squares on the clamped
 // conditions at Chebyshev-Lobatto points of the edge and w = R at equally spaced rim points.
 //
 // Two choices differ from the simplest statement of the method, each for a measured reason:
@@ -18,7 +18,7 @@
 //   like r^(m+2) outside. Both span the same fields once the Trefftz degree exceeds m + 2, but
 //   the growing one is a large polynomial plus a small field, and after the columns are scaled
 //   that small field, the one that carries q_m, is lost in rounding for large m.
-// * The corners. The clamped right angle makes w ~ r^mu with complex mu (D21), which polynomials
+// * The corners. The clamped right angle makes w ~ r^mu with complex mu (D16), which polynomials
 //   approximate only algebraically and with oscillating errors: with Trefftz terms alone, max w on
 //   the paper's scene stalls near 1e-11 relative and its changes from one truncation to the next
 //   change sign. Adding r^mu Phi(phi) at the four corners (each satisfies the clamped conditions
@@ -118,7 +118,7 @@ void power_derivatives(T s, int p, T d[4]) {
 }
 
 // @region rim-profile
-// Eq. (D20): H_m and three derivatives. The field that vanishes inside is, outside, the divided
+// Eq. (D15): H_m and three derivatives. The field that vanishes inside is, outside, the divided
 // difference of p -> s^p on the exponents of the radial solutions, {m, -m, m+2, 2-m}:
 //   G_m(s) = (s^(m+2) - s^-m) / (8 m (m+1)) + (s^(2-m) - s^m) / (8 m (m-1)),   m >= 2,
 // since the divided difference of p^k is 0 for k < 3 and 1 for k = 3: G, G', G'' vanish at
@@ -154,7 +154,7 @@ void profile(int m, T s, bool inside, T h[4]) {
 }
 // @end rim-profile
 
-// Eq. (D20) in the plane: a^3 H_m(r / a) cos(m theta) (or sin) about (cx, cy). Inside the
+// Eq. (D15) in the plane: a^3 H_m(r / a) cos(m theta) (or sin) about (cx, cy). Inside the
 // circle through the polynomials zeta^m, |zeta|^2 zeta^m, which stay regular at the centre.
 template <class T>
 Jet<T> rim_mode_jet(const PlateSeries& f, int m, bool sine, T x, T y) {
@@ -187,10 +187,10 @@ Jet<T> rim_mode_jet(const PlateSeries& f, int m, bool sine, T x, T y) {
   return j;
 }
 
-// Eq. (D21): the clamped-corner function r^mu Phi(psi), psi = phi - pi/4 measured from the
+// Eq. (D16): the clamped-corner function r^mu Phi(psi), psi = phi - pi/4 measured from the
 // bisector, in the corner's frame (xi along one edge, eta along the other; r scaled by L).
 // Phi = A cos mu psi + C cos (mu-2) psi (symmetric) with A cos(mu pi/4) + C cos((mu-2) pi/4) = 0
-// (w = 0 on both edges); the exponent equation (D21) is what makes dw/dn = 0 there too.
+// (w = 0 on both edges); the exponent equation (D16) is what makes dw/dn = 0 there too.
 template <class T>
 Jet<std::complex<T>> corner_local(std::complex<T> mu, bool symmetric, T xi, T eta, T L) {
   using C = std::complex<T>;
@@ -285,7 +285,7 @@ PointValues to_values(const Jet<double>& j) { return {j.v, j.x, j.y, j.xx, j.xy,
 
 bool near(double a, double b, double scale) { return std::abs(a - b) <= 4 * DBL_EPSILON * scale; }
 
-// Eq. (D21) solved by Newton from the asymptotic root, lambda = mu - 1.
+// Eq. (D16) solved by Newton from the asymptotic root, lambda = mu - 1.
 std::complex<long double> exponent(int k, bool symmetric) {
   using C = std::complex<long double>;
   const long double x0 = 4.0L * (k + 1) + (symmetric ? -1.2L : 0.8L), sign = symmetric ? 1 : -1;
@@ -382,7 +382,7 @@ std::vector<double> rim_angles(RimSymmetry sym, int count, bool halfway = false)
   return th;
 }
 
-// Eq. (D22): the least-squares problem, columns scaled to unit length, solved for the
+// Eq. (D17): the least-squares problem, columns scaled to unit length, solved for the
 // minimum-norm coefficients by a complete orthogonal decomposition in the precision T. High
 // Trefftz degrees make some columns nearly dependent; the minimum norm keeps their coefficients
 // small, so that w summed in double is as good as the fit. In long double the rank is cut at

@@ -38,7 +38,7 @@ struct RimSeriesOptions {
   bool extended = false;     // assemble and solve in long double (q's last digits; w and the force do not need it)
 };
 
-// Eq. (D20): the radial profile H_m(s), s = r / a, of the field a^3 H_m(r / a) cos(m theta) whose
+// Eq. (D15): the radial profile H_m(s), s = r / a, of the field a^3 H_m(r / a) cos(m theta) whose
 // bilaplacian is the line load cos(m theta) per unit length on the circle r = a and nothing else:
 // H, H', H'' continuous and H''' jumping by +1 at s = 1, bounded inside, decaying outside (m >= 2).
 // `inside` picks the formula of s < 1 (it may be evaluated at s = 1 to compare the two sides).
@@ -47,7 +47,7 @@ struct RadialProfile {
 };
 RadialProfile rim_mode_profile(int m, double s, bool inside);
 
-// Eq. (D21): exponents of the clamped right-angle corner, w ~ r^mu Phi(phi) with
+// Eq. (D16): exponents of the clamped right-angle corner, w ~ r^mu Phi(phi) with
 // sin((mu - 1) pi / 2) = -(mu - 1) (Phi symmetric about the bisector) or +(mu - 1) (antisymmetric);
 // k = 0, 1, ... in increasing real part, upper half plane. mu_0 = 3.7396 + 1.1190i (symmetric).
 std::complex<double> corner_exponent(int k, bool symmetric);
@@ -73,7 +73,7 @@ struct PlateSeries {
 // One term's value and derivatives at (x, y) (tests: biharmonic, jump and corner conditions).
 PointValues term_values(const PlateSeries& field, const SeriesTerm& t, double x, double y);
 
-// Eq. (D22): the clamped plate under the uniform load alone (no obstacle): the same series
+// Eq. (D17): the clamped plate under the uniform load alone (no obstacle): the same series
 // without rim modes. Throws std::invalid_argument for non-positive or non-finite sides or load.
 PlateSeries solve_clamped_plate(double lx, double ly, double load, const RimSeriesOptions& o = {});
 
@@ -87,7 +87,7 @@ struct RimSeries {
   RimSeriesOptions options;
   RimSymmetry symmetry = RimSymmetry::None;
   PlateSeries field;
-  std::vector<double> q_cos, q_sin;  // Eq. (D23): q(theta) = sum_m q_cos[m] cos m theta + q_sin[m] sin m theta
+  std::vector<double> q_cos, q_sin;  // Eq. (D18): q(theta) = sum_m q_cos[m] cos m theta + q_sin[m] sin m theta
   int unknowns = 0, equations = 0;
   // Largest misfit on check points between the collocation points, relative to R: |w| and
   // h |dw/dn| (h the half-diagonal) on the edge, |w - R| on the rim.
@@ -97,16 +97,16 @@ struct RimSeries {
   double w(double x, double y) const { return field.at(x, y).w; }
   Moments moments(double x, double y, double nu = kPoissonRatio) const;
   double q(double theta) const;  // line load at polar angle theta about the disk's centre
-  double total_force() const;    // Eq. (D23): 2 pi a q_cos[0]
+  double total_force() const;    // Eq. (D18): 2 pi a q_cos[0]
   RimPeak max_w() const;         // grid search, then Newton on the gradient
   RimPeak max_w_from(double x, double y) const;  // Newton (or uphill steps) from (x, y)
 };
 
-// Eq. (D22): Lap^2 w = f + q delta_rim, clamped, w = R on the rim; q and w from one least-squares
+// Eq. (D17): Lap^2 w = f + q delta_rim, clamped, w = R on the rim; q and w from one least-squares
 // solve. Throws std::invalid_argument for a bad scene or options.
 RimSeries solve_rim_series(const RimScene& s, const RimSeriesOptions& o = {});
 
-// Eq. (D24): the premise that makes the series the obstacle problem's solution: the cylinder
+// Eq. (D14): the premise that makes the series the obstacle problem's solution: the cylinder
 // pushes everywhere on the rim (q >= 0) and the plate stays on or above it inside (w >= R).
 // Sampled at `angles` angles and on a polar grid of the disk (rings down to 1e-3 a inside the rim);
 // `tolerance` is relative (to max q and to R).

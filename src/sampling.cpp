@@ -130,7 +130,7 @@ void add_point_row(const Grid& g, double x, double y, double scale, std::map<int
 }
 
 // @region edge-splines
-// Eq. (D25): the constraint on a circle averaged against B-splines of the angle,
+// Eq. (D12): the constraint on a circle averaged against B-splines of the angle,
 //   (S w)_j = (1 / Delta) int B_j(theta) w_h(x(theta)) dtheta >= phi_j,
 // B_j the cardinal B-spline of degree p centred at theta_j = 2 pi j / M, Delta = 2 pi / M. The
 // weight of row j is r Delta = r int B_j, so its multiplier lambda_j is a force per unit length and

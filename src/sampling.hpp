@@ -12,20 +12,20 @@
 namespace plate {
 
 // How the edge rows constrain the plate: at points about a cell apart, or averaged against
-// B-splines of the angle (circles only, D25). Auto, the default, is splines on a circle and points
+// B-splines of the angle (circles only, D12). Auto, the default, is splines on a circle and points
 // on a polygon.
 struct EdgeRows {
   enum class Kind { Auto, Points, Splines };
   Kind kind = Kind::Auto;
   int degree = 3;    // of the splines
-  double cells = 0;  // knot spacing in cells; 0: the spacing h^(3/7) r^(4/7) of (D25)
+  double cells = 0;  // knot spacing in cells; 0: the spacing h^(3/7) r^(4/7) of (D12)
   bool splines_on(const EdgeCurve& c) const {
     return kind == Kind::Splines || (kind == Kind::Auto && c.kind == EdgeCurve::Kind::Circle);
   }
   static EdgeRows points() { return EdgeRows{Kind::Points, 0, 0}; }
   static EdgeRows splines(int degree, double cells = 0) { return EdgeRows{Kind::Splines, degree, cells}; }
 };
-// The number of knots (D25) on a circle of radius r: 2 pi r over the spacing, a multiple of four
+// The number of knots (D12) on a circle of radius r: 2 pi r over the spacing, a multiple of four
 // (so that the square's symmetries and the mirrors about its centre lines map knots onto knots),
 // at least 8.
 int spline_knots(double r, double h, const EdgeRows& rows);

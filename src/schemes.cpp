@@ -171,7 +171,7 @@ SolveResult solve(const Problem& p, const SolveOptions& o) {
   res.w = VectorXd::Zero(p.grid.unknowns());  // starting guess w^{eps,0} = 0
   const auto t_start = Clock::now();
   Cholesky chol;
-  // K + S^T W S has every pattern K + S^T D S can have: spline rows (D25) couple unknowns of
+  // K + S^T W S has every pattern K + S^T D S can have: spline rows (D12) couple unknowns of
   // elements that share no node, so K's own pattern would not do.
   chol.analyze(p.K + p.M);
   res.seconds_factorize += seconds_since(t_start);
@@ -215,7 +215,7 @@ SolveResult solve(const Problem& p, const SolveOptions& o) {
   const auto t_bound = Clock::now();
   res.bound = penalty_error_bound(p, res.w, res.eps, chol);
   res.seconds_bound = seconds_since(t_bound);
-  // The bound is computed in floating point and can be off by about its round-off floor (D14), which
+  // The bound is computed in floating point and can be off by about its round-off floor (D27), which
   // is an estimate, not a bound: certify only when the two together stay within tol.
   res.converged = res.stopped && res.bound.bound + res.bound.roundoff <= o.tol;
   if (res.stopped && !res.converged) res.message = uncertified_message(res, o);

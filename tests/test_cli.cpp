@@ -279,7 +279,7 @@ TEST(Cli, DefaultsAreThePapersProblem) {
 }
 
 // The paper's table, run by a user: on its grid and with each of its tolerances OS, the linear
-// scheme's step rule is met while the error bound (D13) is not, so `plate` must say "not converged"
+// scheme's step rule is met while the error bound (D26) is not, so `plate` must say "not converged"
 // (status 3); the nonlinear scheme at the same settings must be certified (status 0).
 TEST(Cli, ThePapersLinearRunsAreRefusedAndItsNonlinearRunsCertified) {
   const auto rows = plate::read_paper_table(std::string(PLATE_SOURCE_DIR) + "/reference/paper_table.csv");

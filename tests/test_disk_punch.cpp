@@ -1,4 +1,4 @@
-// The closed form of the disk on a flat punch (D17)-(D19), checked against the conditions that
+// The closed form of the disk on a flat punch (D23)-(D25), checked against the conditions that
 // define it (by finite differences of w(r), not by its coefficients) and against the classical
 // point-load formula it must reduce to as the punch shrinks.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Edge rows averaged against B-splines of the angle (D25), the default on a circle: a multiplier
+// Edge rows averaged against B-splines of the angle (D12), the default on a circle: a multiplier
 // space the bicubic plate can carry. The line load they give is measured point by point against
 // the rim-contact series, the answer without a grid; point rows on the same grids are the comparison.
 #include <gtest/gtest.h>

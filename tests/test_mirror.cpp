@@ -128,7 +128,7 @@ TEST(Mirror, EvaluationBeyondTheMirrorLineReflects) {
   }
 }
 
-// The penalty schemes' error bound (D13) on a quarter is the whole plate's: the same discrete
+// The penalty schemes' error bound (D26) on a quarter is the whole plate's: the same discrete
 // problem, so the same bound on the same (symmetric) iterate. Its two factors scale apart, the
 // Green's function at the centre by four and the residual's norm by one half, so a bound read at the
 // wrong node of the quarter, or with the wrong weights, shows here.

@@ -140,6 +140,17 @@ TEST(Paper, NumberedEquationsAndTaggedCodeMatch) {
   for (const auto& eq : d_code) EXPECT_TRUE(d_doc.count(eq)) << "code names (" << eq << ") but the document does not number it";
 }
 
+// A reader meets (D1), (D2), ... in that order, each once: a number out of sequence sends them
+// looking backwards for an equation that comes later.
+TEST(Paper, TheDocumentsOwnEquationsAreNumberedInTheOrderTheyAppear) {
+  const std::string doc = slurp(kRoot / "paper/paper.md");
+  const std::regex tag(R"(\\tag\{D([0-9]+)\})");
+  int expected = 1;
+  for (std::sregex_iterator it(doc.begin(), doc.end(), tag), end; it != end; ++it, ++expected)
+    EXPECT_EQ(std::stoi((*it)[1]), expected) << "equation (D" << (*it)[1] << ") appears where (D" << expected << ") should";
+  EXPECT_GE(expected, 10) << "fewer of the document's own equations than expected";
+}
+
 TEST(Paper, EveryIncludedResultIsMadeByTheMakefile) {
   const std::string doc = slurp(kRoot / "paper/paper.md"), make = slurp(kRoot / "Makefile");
   for (const auto& path : matches(doc, std::regex(R"re(include="(results/[^"]+)")re"))) {

@@ -1,4 +1,4 @@
-// Richardson extrapolation (D16) on sequences whose limit is known, and the agreement rule built on it.
+// Richardson extrapolation (D13) on sequences whose limit is known, and the agreement rule built on it.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -26,7 +26,7 @@ using namespace plate;
 
 namespace {
 
-// The samplings compared: edge rows as the code's default (cubic splines of the angle, D25), edge
+// The samplings compared: edge rows as the code's default (cubic splines of the angle, D12), edge
 // rows at points (the previous default, for comparison), and the paper's two readings of (8).
 struct Variant {
   std::string name;
@@ -102,7 +102,7 @@ Row solve_one(const Variant& v, int n, const PaperScene& scene) {
 
   const Refinement& refined = x.result.levels.back().refinement;
   if (!refined.w.empty()) {
-    // A refined answer (D27) is the same on every machine to the refinement's floor, in w and in the
+    // A refined answer (D22) is the same on every machine to the refinement's floor, in w and in the
     // forces alike: the corrections' size once they stop shrinking.
     const double floor_mu = refined.relative_noise_mu();
     row.noise_max_w = row.noise_w_mid = row.noise_w_diag = row.noise_m12 = refined.noise_w(x.result.w);
@@ -142,7 +142,7 @@ std::string csv(const std::vector<Row>& rows) {
        "# grids, four samplings of the constraint; made by build/continuum. max_w and max_abs_m12 over the grid\n"
        "# nodes (nu = 0.3); mean_line_force = total_force / (2 pi r); q_theta: the line load on the rim at\n"
        "# theta = 0 and pi/4: the spline's value (edge), the fit by cos(4 k theta), k = 0..3 (edge-points). Digits down to\n"
-       "# 10 times each value's round-off: a refined solve's floor (D27), otherwise src/roundoff.hpp's estimate\n"
+       "# 10 times each value's round-off: a refined solve's floor (D22), otherwise src/roundoff.hpp's estimate\n"
        "sampling,n,unknowns,samples,edge_points,certified";
   for (const Quantity& q : kQuantities) o << "," << q.column;
   o << "\n";
@@ -312,7 +312,7 @@ std::string errors(const Study& s) {
 std::string line_loads(const Study& s) {
   std::ostringstream o;
   o << "# continuum: the line load q (force per unit length) on the rim, theta in [0, pi/2], and the rim-contact\n"
-       "# series' q_series at the same angle; sampling edge: the spline of the rows' multipliers (D25) at 181\n"
+       "# series' q_series at the same angle; sampling edge: the spline of the rows' multipliers (D12) at 181\n"
        "# angles, n = 32 ... finest; edge-points: the point values on n = 128. Made by build/continuum; printed\n"
        "# to the digits round-off leaves the same on every machine; distance: |q - q_series| over the series' mean load\n"
        "sampling,n,theta,q,q_series,distance\n";

@@ -239,10 +239,10 @@ void describe(std::ostream& md, const Setup& u, const Runs& runs) {
         "primal-dual active-set method; its own assembly, quadrature (`tripleQF(qf5pT)`) and sparse solver.\n\n"
      << "Both sample the contact line itself, so max w and the total force converge at a steady order in both "
         "(the orders below). The line load q is the multiplier per unit length on the circle: ours the spline of "
-        "the edge rows (D25), a function of the angle; FreeFEM's the vertex forces over their arcs, fitted by "
+        "the edge rows (D12), a function of the angle; FreeFEM's the vertex forces over their arcs, fitted by "
         "cos(4 k theta), k = 0 to 3, since point values scatter. The mean line force is the total force over "
         "the circle's length. Digits are printed down to 10 times each code's round-off bound (for this code the size "
-        "of the refinement's last correction (D27), u n^3 relative for an unrefined solve, see exact_solve_roundoff; "
+        "of the refinement's last correction (D22), u n^3 relative for an unrefined solve, see exact_solve_roundoff; "
      << kFreefemRoundoffRule << " for FreeFEM).\n\n";
   runs_table(md, runs, {&runs.ff, &runs.edge}, true);
 }
@@ -379,7 +379,7 @@ void record(std::ostream& md, const Setup& u, const Runs& runs) {
   convergence(md, u, runs, {&runs.gauss, &runs.nodes});
 }
 
-// The disk on a flat punch: FreeFEM against the closed form (D17)-(D19). True if every run is
+// The disk on a flat punch: FreeFEM against the closed form (D23)-(D25). True if every run is
 // certified and the closed form lies within each limit's error bar.
 bool disk_verdict(std::ostream& md, const Setup& u, const Runs& runs) {
   const DiskPunch& d = u.disk;
@@ -387,7 +387,7 @@ bool disk_verdict(std::ostream& md, const Setup& u, const Runs& runs) {
   md << "\n## A clamped disk on a flat punch: FreeFEM against the closed form\n\n"
      << "A clamped circular plate of radius a = " << d.a << " lifted by a flat circular punch of radius b = " << d.b
      << " and height R = " << d.R << ", f = 0. It touches the punch along the rim only, and its deflection is the "
-        "radial solution (D17)-(D19): w(0) = " << fmt("%.12g", w0) << ", total force 8 pi F = " << fmt("%.12g", force)
+        "radial solution (D23)-(D25): w(0) = " << fmt("%.12g", w0) << ", total force 8 pi F = " << fmt("%.12g", force)
      << ". FreeFEM solves it on structured gmsh meshes of the disk (`reference/disk_with_punch.geo`: the punch's "
         "circle embedded, 4 n cells along each quarter of it) with the same script as the square. Squares cannot "
         "mesh a disk, so this checks the FreeFEM code on its own, and so makes the square's comparison worth more. "

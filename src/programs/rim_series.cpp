@@ -55,7 +55,7 @@ std::string table_md(const RimAnswer& a) {
 
 // The finite elements against the series where nothing but the plate is discretised: the clamped
 // unit square under f = 1, no obstacle, its centre deflection on n = 16 ... finest, solved once in
-// double and once refined (D27). In double the error falls with h until the round-off of the
+// double and once refined (D22). In double the error falls with h until the round-off of the
 // assembled matrix, the same on every machine, takes over; the refined solve shows it gone.
 std::string uniform_load_csv(int finest) {
   const PlateSeries series = solve_clamped_plate(1, 1, 1);
@@ -63,7 +63,7 @@ std::string uniform_load_csv(int finest) {
   std::ostringstream o;
   o << "# rim_series: the clamped unit square under f = 1 (no obstacle), centre deflection by the series (n = 0)\n"
        "# and by Bogner-Fox-Schmit elements on n x n squares, relative error against the series: one Cholesky\n"
-       "# solve in double, and the same refined with residuals in long double (D27). Made by build/rim_series\n"
+       "# solve in double, and the same refined with residuals in long double (D22). Made by build/rim_series\n"
        "n,w_centre,relative_error,w_centre_refined,relative_error_refined\n"
     << "0," << rim_digits(exact) << ",,,\n";
   const Field none = [](double, double) { return -1.0; }, one = [](double, double) { return 1.0; };

@@ -1,4 +1,4 @@
-// What a report says of an extrapolation (D16): one line, to the digits its round-off leaves.
+// What a report says of an extrapolation (D13): one line, to the digits its round-off leaves.
 #pragma once
 #include <string>
 
