@@ -222,6 +222,37 @@ TEST(Paper, TheBuiltPageHasNoRawTableRowsOrMangledOptions) {
   EXPECT_EQ(html.find("{{"), std::string::npos) << "a {{key}} was left unfilled";
 }
 
+// The reports write their symbols in ASCII (eps, lambda_1h, +-) for a terminal; the document sets
+// them as mathematics (paper/filters/include.lua). Outside code, none may reach the reader as typed.
+TEST(Paper, TheBuiltPageSetsNoMathematicsInAscii) {
+  const std::string html = slurp(kRoot / "results/paper.html");
+  ASSERT_FALSE(html.empty());
+  // The reader's text: tags dropped, and code, MathML, styles and scripts dropped whole (found by
+  // hand: std::regex recurses per character and the page is megabytes).
+  std::string text;
+  for (size_t at = 0; at < html.size();) {
+    if (html[at] != '<') {
+      text += html[at++];
+      continue;
+    }
+    size_t end = html.find('>', at);
+    if (end == std::string::npos) break;
+    for (const char* element : {"pre", "code", "math", "style", "script"}) {
+      const std::string open = std::string("<") + element;
+      if (html.compare(at, open.size(), open) == 0 && (html[at + open.size()] == '>' || html[at + open.size()] == ' ')) {
+        const size_t close = html.find(std::string("</") + element + ">", at);
+        end = close == std::string::npos ? html.size() - 1 : html.find('>', close);
+        break;
+      }
+    }
+    text += ' ';
+    at = end + 1;
+  }
+  std::smatch m;
+  const std::regex ascii(R"((^|[\s(])(eps|w_eps|eps\^-1|lambda_1h|lambda_1|m12|phi|C\^1|Lap\^2|\+-|&lt;=|&gt;=)([\s),.;:]|$))");
+  EXPECT_FALSE(std::regex_search(text, m, ascii)) << "ASCII mathematics in the page: \"" << m.str() << "\"";
+}
+
 TEST(Published, TheTableIsTheOneInThePaper) {
   // Independent of the CSV: the first and last rows and the row count, read off the paper's text.
   const auto t = plate::read_paper_table(kRoot / "reference/paper_table.csv");

@@ -236,32 +236,34 @@ void exact_table(std::ostream& md, const ByN& exact_at, const ByN& baseline_at, 
         "own process. A solver runs on finer grids while its next run, predicted from the growth of its last two, "
         "would take at most " << fmt("%g", budget) << " s; ours, the baseline and SNESVI's ssls, which the targets at "
         "n = 512 and 1024 need, run to their limits.\n\n";
-  md << "| n | unknowns | baseline s (analyse + factorise + solve) | exact s | ratio | PDAS its (finest grid) | "
-        "factorisations (all grids) | correction solves (all grids) | peak MiB | certificate | w(0.5, 0.5) |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  md << "| $n$ | unknowns | baseline s | of which factorise | exact s | ratio | PDAS its | factorisations | "
+        "correction solves | peak MiB | certificate | $w(0.5, 0.5)$ |\n"
+        "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const auto& [n, e] : exact_at) {
     const auto b = baseline_at.find(n);
     const auto& ev = e->v;
     md << "| " << n << " | " << fmt("%.0f", ev.at("unknowns")) << " | ";
     if (b != baseline_at.end()) {
       const auto& bv = b->second->v;
-      md << fmt("%.3g", baseline_seconds(*b->second)) << " (" << fmt("%.2g", bv.at("analyse_s")) << " + "
-         << fmt("%.3g", bv.at("factorise_s")) << " + " << fmt("%.2g", bv.at("solve_s")) << ") | "
+      md << fmt("%.3g", baseline_seconds(*b->second)) << " | " << fmt("%.3g", bv.at("factorise_s")) << " | "
          << fmt("%.3g", ev.at("seconds")) << " | " << fmt("%.2f", ev.at("seconds") / baseline_seconds(*b->second)) << " | ";
     } else {
-      md << "not run | " << fmt("%.3g", ev.at("seconds")) << " | | ";
+      md << "not run | | " << fmt("%.3g", ev.at("seconds")) << " | | ";
     }
     md
        << fmt("%.0f", ev.at("fine_iterations")) << " | " << fmt("%.0f", ev.at("factorizations")) << " | "
        << fmt("%.0f", ev.at("correction_solves")) << " | " << fmt("%.0f", e->peak_mib) << " | "
        << fmt("%.1e", ev.at("certificate")) << " | " << fmt("%.7f", ev.at("w_centre")) << " |\n";
   }
+  md << "\nTable: Our exact solver against one unconstrained factorisation and solve of the same grid (the "
+        "baseline: analysis, factorisation and solve). Read the ratio, the price of the contact, and the certificate, "
+        "a bound on the distance from the discrete answer. PDAS iterations are those of the finest grid; "
+        "factorisations and correction solves count every grid of the sequence.\n";
 }
 
 void penalty_table(std::ostream& md, const std::vector<Outcome>& outcomes, const ByN& exact_at, const ByN& baseline_at) {
-  md << "\nPenalty schemes (same grids, nodal sampling; error against the exact discrete solution):\n\n"
-        "| scheme | tol | n | converged | iterations | factorisations | s | ratio to baseline | error (discrete) |\n"
-        "|---|---|---|---|---|---|---|---|---|\n";
+  md << "\n| scheme | tol | $n$ | converged | iterations | factorisations | s | ratio to baseline | error (discrete) |\n"
+        "|---|---:|---:|---|---:|---:|---:|---:|---:|\n";
   for (const Outcome& r : outcomes) {
     if (r.job.solver != "nonlinear" && r.job.solver != "linear") continue;
     if (!r.ok) {
@@ -276,6 +278,9 @@ void penalty_table(std::ostream& md, const std::vector<Outcome>& outcomes, const
        << (b != baseline_at.end() ? fmt("%.1f", r.v.at("seconds") / baseline_seconds(*b->second)) : "") << " | "
        << (e != exact_at.end() ? fmt("%.1e", max_diff(r.nodal, e->second->nodal)) : "") << " |\n";
   }
+  md << "\nTable: The paper's penalty schemes on the same grids (nodal sampling). Read the last column, the largest "
+        "nodal distance from the exact discrete solution, beside the time; a run marked no stopped before its "
+        "tolerance.\n";
 }
 
 // The peers: PETSc's SNESVI on the identical discrete problem, against our exact solver.
@@ -283,9 +288,9 @@ void peers_table(std::ostream& md, const std::vector<Outcome>& outcomes, const B
   md << "\nPeers: PETSc's SNESVI (`" << peer.program << "`, PETSc 3.18) on the identical discrete problem (the same K, "
         "F and nodal bounds), reduced-space Newton (rsls: CHOLMOD Cholesky of K on the free set) and semismooth "
         "Newton (ssls: MUMPS LU of the scaled Jacobian), full projected Newton steps, started from max(phi, 0); "
-        "each answer is judged by our certificate and compared with ours node by node:\n\n"
-        "| n | solver | certified | Newton its | factorisations | s | ratio to ours | peak MiB | certificate | "
-        "max nodal difference to ours |\n|---|---|---|---|---|---|---|---|---|---|\n";
+        "each answer is judged by our certificate and compared with ours node by node.\n\n"
+        "| $n$ | solver | certified | Newton its | factorisations | s | ratio to ours | peak MiB | certificate | "
+        "largest nodal difference to ours |\n|---:|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Outcome& r : outcomes) {
     if (!is_peer(r.job)) continue;
     md << "| " << r.job.n << " | " << r.job.solver.substr(7) << " | ";
@@ -301,6 +306,8 @@ void peers_table(std::ostream& md, const std::vector<Outcome>& outcomes, const B
        << fmt("%.1e", r.v.at("certificate")) << " | "
        << (e != exact_at.end() ? fmt("%.1e", max_diff(r.nodal, e->second->nodal)) : "") << " |\n";
   }
+  md << "\nTable: PETSc's SNESVI on the identical discrete problem. Read the certificate and the nodal difference "
+        "first, whether the peer found the same answer, then the time against ours.\n";
 }
 
 // Target: at n = 512, at least 3 times faster than the faster SNESVI variant that ran there. A

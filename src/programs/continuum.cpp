@@ -207,6 +207,15 @@ std::string answer(const Study& s) {
   return o.str();
 }
 
+// A sampling's name as a caption begins with it.
+std::string sampling_title(const std::string& k) {
+  if (k == "edge") return "Edge sampling with splines (the default)";
+  if (k == "edge-points") return "Edge sampling at points";
+  if (k == "gauss") return "Gauss sampling";
+  if (k == "nodes") return "Nodal sampling";
+  return k + " sampling";
+}
+
 std::string markdown(const Study& s) {
   std::ostringstream o;
   o << "Made by `make continuum` (`build/continuum`); numbers in `continuum.csv`, errors in `continuum_error.csv`, "
@@ -216,18 +225,28 @@ std::string markdown(const Study& s) {
        "the rim, where the plate touches, and at the nodes inside it; Gauss and nodal sampling are the paper's two "
        "readings of (8).\n\n";
   for (const std::string& k : s.kinds) {
-    o << "**" << k << " sampling**\n\n| n | unknowns | samples | certified";
-    for (const Quantity& q : kQuantities) o << " | " << q.name;
-    o << " |\n|---|---|---|---";
-    for (size_t i = 0; i < kQuantities.size(); ++i) o << "|---";
+    // A quantity no run of this sampling has (the line load off the rim) is left out, not shown as n/a.
+    std::vector<const Quantity*> shown;
+    for (const Quantity& q : kQuantities)
+      for (const Row& r : s.rows)
+        if (r.kind == k && std::isfinite(r.*q.field)) {
+          shown.push_back(&q);
+          break;
+        }
+    o << "| n | unknowns | samples";
+    for (const Quantity* q : shown) o << " | " << q->name;
+    o << " |\n|---:|---:|---:";
+    for (size_t i = 0; i < shown.size(); ++i) o << "|---:";
     o << "|\n";
     for (const Row& r : s.rows) {
       if (r.kind != k) continue;
-      o << "| " << r.n << " | " << r.unknowns << " | " << r.samples << " | " << (r.certified ? "yes" : "**no**");
-      for (const Quantity& q : kQuantities) o << " | " << (std::isfinite(r.*q.field) ? num(r, q) : "n/a");
+      o << "| " << r.n << (r.certified ? "" : " (**not certified**)") << " | " << r.unknowns << " | " << r.samples;
+      for (const Quantity* q : shown) o << " | " << (std::isfinite(r.*q->field) ? num(r, *q) : "n/a");
       o << " |\n";
     }
-    o << "\n";
+    o << "\nTable: " << sampling_title(k) << ", every grid (n cells a side; samples: the points or splines that carry the "
+         "constraint). Every run is certified unless marked. Read down a column: the digits that stop changing are "
+         "the answer.\n\n";
   }
   o << "**Against the rim-contact series.** Each row's relative distance from the series' answer (`rim_series.md`): max w, "
        "the total force and, for edge sampling, the line load at every edge point (its largest distance from the series' "
@@ -247,7 +266,8 @@ std::string markdown(const Study& s) {
       before = &r;
     }
   }
-  o << "\n";
+  o << "\nTable: Each grid's relative distance from the rim-contact series, and the order at which it shrinks "
+       "from the grid before: a steady order is what makes a Richardson limit trustworthy.\n\n";
   o << "**Observed orders and limits.** The order from three successive grids is log2 of the ratio of their "
        "increments; it exists where the increments keep one sign and shrink. Where the last two orders differ by "
        "at most " << fmt("%g", kSteadySpread) << " the order is called steady, and the Richardson limit from the last three grids is given with "
@@ -263,6 +283,8 @@ std::string markdown(const Study& s) {
       for (size_t i = 0; i < e.orders.size(); ++i) o << (i ? ", " : "") << format_order(e.orders[i], e.order_noise[i]);
       o << " | " << verdict(e) << " |\n";
     }
+  o << "\nTable: The observed orders of every quantity and sampling, and what they allow: a limit with its bar "
+       "where the order is steady, the finest value with its last increment elsewhere.\n";
   return o.str();
 }
 

@@ -44,14 +44,14 @@ std::string yes_no(bool b) { return b ? "yes" : "**no**"; }
 // The failure in a few words, from the solver's message.
 std::string why_not(const SweepRow& r) {
   if (r.converged) return "";
-  if (r.message.find("round-off") != std::string::npos) return "round-off: eps^-1 (w - phi) cannot be evaluated to tol";
-  if (r.message.find("max-iter") != std::string::npos) return "iteration cap reached";
-  if (r.message.find("stopped before") != std::string::npos) return "steps below tol, error above: not w_eps";
+  if (r.message.find("round-off") != std::string::npos) return "round-off";
+  if (r.message.find("max-iter") != std::string::npos) return "iteration cap";
+  if (r.message.find("stopped before") != std::string::npos) return "stalled";
   return r.message;
 }
 
 void eps_sweep(std::ostream& md, const Problem& p, const VectorXd& reference, const std::string& reference_name,
-               double tol, int cap, double lambda1) {
+               double tol, int cap, double lambda1, const std::string& caption) {
   md << "| scheme | eps | certified | iterations | predicted (5a) | factorisations | error bound | round-off floor"
         " | violation | error vs " << reference_name << " | why not |\n|---|---:|:---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
   std::string smallest;  // said after the table, which a line between rows would cut in two
@@ -73,7 +73,10 @@ void eps_sweep(std::ostream& md, const Problem& p, const VectorXd& reference, co
                 (s == Scheme::Linear ? "(5a) " : "(3a) ") +
                 (smallest_certified > 0 ? fmt("%.0e", smallest_certified) : std::string("none"));
   }
-  md << "\n" << smallest << ".\n\n";
+  md << "\nTable: " << caption << " Why not: round-off, eps^-1 (w - phi) cannot be evaluated to tol; stalled, the "
+        "steps fell below tol while the error bound stayed above it, so the iterate is not w_eps; iteration cap, "
+        "the runs' limit was reached.\n\n"
+     << smallest << ".\n\n";
 }
 
 std::string table_cell(std::string s) {
@@ -98,6 +101,8 @@ void bad_input(std::ostream& md, const std::string& plate, const std::string& ca
     md << "| `plate " << table_cell(c.args) << "` | " << r.status << " (" << c.status << ")"
        << (ok ? "" : " **unexpected**") << " | " << table_cell(r.output) << " |\n";
   }
+  md << "\nTable: Each bad input given to `plate`, the exit status it got (the one expected in brackets), and "
+        "the message it printed.\n";
   md << "\n" << as_expected << " of " << n << " cases behave as expected (status, a message naming the input, and an "
      << "output file only for status 3, where it says it did not converge).\n\n";
 }
@@ -118,17 +123,17 @@ void small_eps(std::ostream& md, const Context& c) {
   {
     const Problem p = make_problem(make_grid(16), SamplingKind::Nodes, c.scene.obstacle(), uniform(0));
     const ExactResult exact = solve_exact(p, ExactOptions{});
-    md << "**h = 1/16, nodal sampling**, against the exact-constraint solution (certificate "
-       << fmt("%.1e", exact.certificate.worst()) << "):\n\n";
-    eps_sweep(md, p, exact.w, "exact", 1e-8, 20000, c.lambda1);
+    eps_sweep(md, p, exact.w, "exact", 1e-8, 20000, c.lambda1,
+              "h = 1/16, nodal sampling, each eps against the exact-constraint solution (certificate " +
+                  fmt("%.1e", exact.certificate.worst()) + ").");
   }
   for (int n : {16, 4}) {  // 4: the paper's own grid
     const Problem p = make_problem(make_grid(n), SamplingKind::Gauss, c.scene.obstacle(), uniform(0));
     const EpsLimit limit = eps_limit(p);
-    md << "**h = 1/" << n << ", Gauss sampling**" << (n == 4 ? " (the paper's grid and (8) as printed)" : "")
-       << ", against the eps -> 0 limit extrapolated from eps = 1e-12 (error ratio per decade "
-       << fmt("%.3f", limit.ratio) << "; the limit is uncertain by " << fmt("%.0e", limit.estimate) << "):\n\n";
-    eps_sweep(md, p, limit.w, "eps-limit", 1e-8, 20000, c.lambda1);
+    eps_sweep(md, p, limit.w, "limit", 1e-8, 20000, c.lambda1,
+              "h = 1/" + std::to_string(n) + ", Gauss sampling" + (n == 4 ? " (the paper's grid and (8) as printed)" : "") +
+                  ", each eps against the limit eps -> 0 extrapolated from eps = 1e-12 (error ratio per decade " +
+                  fmt("%.3f", limit.ratio) + "; the limit is uncertain by " + fmt("%.0e", limit.estimate) + ").");
   }
 }
 
@@ -150,6 +155,8 @@ void point_obstacle(std::ostream& md, const Context& c) {
     *c.point_rows << n << ',' << members(r.active) << ',' << force << ',' << ratio << ',' << gap << ','
                   << (r.converged ? 1 : 0) << '\n';
   }
+  md << "\nTable: The point obstacle on finer grids: w_c / P, the plate's compliance at its centre, beside the "
+        "published coefficient. Read the last column.\n";
 }
 
 // Contact on an area: where it starts (the published sag), and how the active set grows with n.
@@ -178,7 +185,7 @@ void flat_support(std::ostream& md, const Context& c) {
     const ExactLevel& l = r.levels.back();
     md << "| " << n << " | " << members(r.active) << " | "
        << (previous ? fmt("%.2f", double(members(r.active)) / previous) : std::string("")) << " | "
-       << fmt("%.5f", r.lambda[g.node(n / 2, n / 2)]) << " | " << fmt("%.5f", p.sampling.weights.dot(r.lambda))
+       << (r.lambda[g.node(n / 2, n / 2)] == 0 ? std::string("0") : fmt("%.5f", r.lambda[g.node(n / 2, n / 2)])) << " | " << fmt("%.5f", p.sampling.weights.dot(r.lambda))
        << " | " << l.pdas_iterations << " | " << l.factorizations << (r.converged ? "" : " (not converged)") << " | ";
     *c.timings << "flat support," << n << ",grid-sequenced," << fmt("%.3g", s) << "\n";
     if (n <= 128) {
@@ -193,6 +200,8 @@ void flat_support(std::ostream& md, const Context& c) {
     }
     previous = members(r.active);
   }
+  md << "\nTable: The flat support on finer grids (R = 5e-4): the contact set, the force density at the "
+        "centre node, the total force, and the work of the solver with and without the coarser grid's set.\n";
   md << "\nPer halving of h the touching nodes of an area grow 4 times, those of a curve 2: compare the ratio column. "
         "The force density at the centre is to be compared with q = 1. From an empty set the primal-dual iteration needs "
      << cold_its << " iterations on n = " << cold_ns << ", most with their own factorisation; started from the coarser grid's contact set "
@@ -219,6 +228,9 @@ void many_regions(std::ostream& md, const Context&) {
        << fmt("%.1e", r.certificate.worst()) << " | " << yes_no(pen.converged) << " | " << contact_regions(g, touched)
        << " | " << fmt("%.1e", pen.error) << " | " << fmt("%.1e", 1e-10 * r.lambda.maxCoeff()) << " |\n";
   }
+  md << "\nTable: Sixteen bumps under three loads: the contact regions the exact solver finds, and whether (3a), a "
+        "second algorithm, finds the same ones. Compare (3a)'s distance from the exact answer with eps times "
+        "the largest multiplier (last column), the size the penalty's own error takes.\n";
 }
 
 // Complementarity's degenerate case: touched with zero force.
@@ -263,6 +275,8 @@ void million_unknowns(std::ostream& md, const Context& c) {
        << " | " << fmt("%.1e", r.bound.bound) << " | " << fmt("%.1e", r.error) << " |\n";
     *c.timings << "million unknowns," << c.fine << "," << to_string(s) << "," << fmt("%.3g", r.seconds) << "\n";
   }
+  md << "\nTable: The paper's problem at n = " << c.fine << " by the exact solver and by the paper's two schemes, "
+        "each judged by its own certificate or error bound and by its distance from the exact answer.\n";
   md << "\nAt the same eps the penalised solution is further from the exact one here than on n = 16 (the "
         "nodal table above): the contact force concentrates on the rim, and its nodal density grows as h "
         "falls.\n";

@@ -76,12 +76,12 @@ std::string reference_error(const EpsLimit& L) {
   return e[0] == '<' ? e : "<= " + e;
 }
 
-// The ratio of two differences of the path, each uncertain by twice the round-off of a solution.
+// The ratio of two differences of the path, each uncertain by twice the round-off of a solution:
+// printed one way on every grid, with that uncertainty beside it.
 std::string eps_ratio(const EpsLimit& L) {
   const double relative = 2 * L.roundoff * (1 / (L.ratio * L.difference) + 1 / L.difference);
-  const int decimals = static_cast<int>(std::floor(-std::log10(10 * L.ratio * relative)));
-  if (decimals < 0) return "undetermined (round-off)";
-  return fmt(("%." + std::to_string(std::min(decimals, 3)) + "f").c_str(), L.ratio);
+  if (!(L.ratio * relative < 0.5)) return "undetermined (round-off)";
+  return fmt("%.2f", L.ratio) + " ± " + fmt("%.0e", std::max(L.ratio * relative, 5e-3));
 }
 
 // The a-posteriori estimate is zero by construction for (3a): printed as such, not as a bound.
@@ -93,11 +93,14 @@ std::string markdown(const std::vector<Case>& cases, const std::vector<Published
   std::ostringstream md;
   for (const Case& c : cases) {
     const Noise z = noise(c);
-    md << "\n**h = 1/" << c.n << ", " << to_string(c.kind) << " sampling** (" << 4 * (c.n - 1) * (c.n - 1)
-       << " unknowns; lambda_1h = " << fmt("%.4f", c.lambda1h) << "; reference error " << reference_error(c.limit)
-       << ", eps-ratio " << eps_ratio(c.limit) << ")\n\n";
-    md << "| OS |" << (with_paper ? " paper (5a) | GLT |" : "")
-       << " (5a) iterations | final eps | last step | error | estimate | stopped | (3a) iterations | final eps | error |\n";
+    const std::string caption =
+        "h = 1/" + std::to_string(c.n) + ", " + (std::string(to_string(c.kind)) == "gauss" ? "Gauss points" : "nodes") + " (" +
+        std::to_string(4 * (c.n - 1) * (c.n - 1)) + " unknowns, $\\lambda_{1h}$ = " + fmt("%.4f", c.lambda1h) +
+        "): read the (5a) iterations against " + (with_paper ? "the paper's and GLT's" : "those on the paper's grid, h = 1/4 (`table.md`)") +
+        ", and the error, each run's distance from the $\\varepsilon \\to 0$ limit (known to " +
+        reference_error(c.limit) + "; successive differences of the path shrink by " + eps_ratio(c.limit) + ").";
+    md << "\n| OS |" << (with_paper ? " paper (5a) | GLT |" : "")
+       << " (5a) iterations | final $\\varepsilon$ | last step | error | estimate | stopped | (3a) iterations | final $\\varepsilon$ | error |\n";
     md << "|---:|" << (with_paper ? "---:|---:|" : "") << "---:|---:|---:|---:|---:|:---:|---:|---:|---:|\n";
     for (std::size_t i = 0; i < table.size(); ++i) {
       const Run &l = c.runs[i].first, &nl = c.runs[i].second;
@@ -108,6 +111,7 @@ std::string markdown(const std::vector<Case>& cases, const std::vector<Published
          << yes_no(l.converged) << " | " << nl.iterations << (nl.converged ? "" : " (no)") << " | "
          << fmt("%.0e", nl.eps) << " | " << fmt_above(nl.error, z.reference, 2) << " |\n";
     }
+    md << "\nTable: " << caption << "\n";
   }
   return md.str();
 }

@@ -97,7 +97,7 @@ CheckValues freefem_values(const nlohmann::json& j, int cells, double radius) {
   try {
     CheckValues v;
     v.code = kFreefemCode;
-    v.grid = std::to_string(cells) + " cells per quarter circle (" + std::to_string(j.at("triangles").get<int>()) + " triangles)";
+    v.grid = std::to_string(cells) + " cells, " + std::to_string(j.at("triangles").get<int>()) + " triangles";
     v.cells = cells;
     v.h = j.at("hmax").get<double>();
     v.unknowns = j.at("unknowns").get<int>();
