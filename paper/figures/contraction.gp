@@ -7,11 +7,12 @@ if (fmt eq 'svg') { set terminal svg size 900,520 dynamic font 'Helvetica,15' } 
 set output out
 set datafile separator ','
 set logscale x
-set xlabel 'eps'
+set xlabel 'ε'
 set ylabel 'factor per step'
 set yrange [-0.03:1.03]
-# The eps range of the data, with room so that its end points stay off the frame.
-set xrange [6e-5:1.6e-2]
+# The eps range of the data, read from it, with room so that its end points stay off the frame.
+stats 'results/contraction.csv' using 3 nooutput
+set xrange [STATS_min / 1.6 : STATS_max * 1.6]
 set format x "%g"
 set grid
 set key outside right top box
@@ -19,7 +20,7 @@ data = 'results/contraction.csv'
 fine(s, col) = (column(1) == 16 && strcol(2) eq s) ? column(col) : NaN
 plot data using 3:(fine('nodes', 5)) with lines lw 2 lc rgb '#1f4e8c' title 'q', \
      data using 3:(fine('nodes', 8)) with lines lw 2 dt 2 lc rgb '#1f4e8c' title 'q^2', \
-     data using 3:(fine('nodes', 10)) with lines lw 1 dt 3 lc rgb '#c0392b' title "paper's rho", \
+     data using 3:(fine('nodes', 10)) with lines lw 1 dt 3 lc rgb '#c0392b' title "paper's ρ", \
      data using 3:(fine('nodes', 6)) with points pt 6 ps 1.6 lc rgb '#1f4e8c' title 'steps, no contact', \
      data using 3:(fine('nodes', 7)) with points pt 7 ps 1.2 lc rgb '#2e8b57' title 'steps, obstacle (nodes)', \
      data using 3:(fine('gauss', 7)) with points pt 5 ps 1.2 lc rgb '#8e44ad' title 'steps, obstacle (Gauss)', \

@@ -24,7 +24,7 @@ set key outside below horizontal
 set parametric
 set trange [0:2*pi]
 set datafile separator ','
-plot 0.5 + 0.25*cos(t), 0.5 + 0.25*sin(t) with filledcurves lc rgb '#cfe0f5' title 'phi = R on the disk', \
+plot 0.5 + 0.25*cos(t), 0.5 + 0.25*sin(t) with filledcurves lc rgb '#cfe0f5' title 'φ = R on the disk', \
      0.5 + 0.25*cos(t), 0.5 + 0.25*sin(t) with lines lw 2 lc rgb '#1f4e8c' title 'contact circle (10)', \
      'results/fig1_points.csv' using 1:2 with points pt 2 ps 2 lw 2 lc rgb '#c0392b' title 'check points'
 unset parametric
@@ -65,5 +65,5 @@ set ytics 0,0.02,0.1
 set xlabel 'x'
 set key inside top right horizontal
 plot 'results/fig1_surface.dat' index 0 every ::0 using 1:(abs($2 - 0.5) < 1e-9 ? $3 : NaN) with lines lw 2 lc rgb '#1f4e8c' title 'w(x, 1/2)', \
-     (x >= 0.25 && x <= 0.75 ? 0.0625 : NaN) with filledcurves y1=0 lc rgb '#cfe0f5' title 'obstacle phi'
+     (x >= 0.25 && x <= 0.75 ? 0.0625 : NaN) with filledcurves y1=0 lc rgb '#cfe0f5' title 'obstacle φ'
 unset multiplot

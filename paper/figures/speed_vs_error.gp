@@ -9,7 +9,10 @@ set datafile separator ','
 set grid
 data = 'results/speed_vs_error.csv'
 # Columns: 1 solver, 2 n, 4 tol, 9 seconds, 10 ratio, 14 error_limit.
-sel(s, t, col) = (strcol(1) eq s && (t eq '' || strcol(4) eq t)) ? column(col) : NaN
+# Columns: 5 converged. A run that stopped without meeting its tolerance has no certified answer: it
+# is drawn apart, as a grey cross, not on its scheme's line.
+sel(s, t, col) = (strcol(1) eq s && (t eq '' || strcol(4) eq t) && strcol(5) eq 'yes') ? column(col) : NaN
+failed(col) = ((strcol(1) eq 'linear' || strcol(1) eq 'nonlinear') && strcol(5) ne 'yes') ? column(col) : NaN
 set multiplot layout 1,2
 set logscale xy
 set format x '10^{%L}'
@@ -22,17 +25,20 @@ plot data using (sel('exact', '', 9)):(sel('exact', '', 14)) with linespoints pt
      data using (sel('exact', '', 9)):(sel('exact', '', 14)):2 with labels offset 0,1 font ',10' notitle, \
      data using (sel('nonlinear', '1e-06', 9)):(sel('nonlinear', '1e-06', 14)) with linespoints pt 5 lc 2 title 'scheme (3a), tol 1e-6', \
      data using (sel('nonlinear', '1e-08', 9)):(sel('nonlinear', '1e-08', 14)) with linespoints pt 4 lc 3 title 'scheme (3a), tol 1e-8', \
-     data using (sel('linear', '1e-06', 9)):(sel('linear', '1e-06', 14)) with linespoints pt 9 lc 4 title 'scheme (5a), tol 1e-6'
+     data using (sel('linear', '1e-06', 9)):(sel('linear', '1e-06', 14)) with linespoints pt 9 lc 4 title 'scheme (5a), tol 1e-6', \
+     data using (failed(9)):(failed(14)) with points pt 2 ps 1.2 lc rgb '#888888' title 'penalty run, not converged'
 set logscale x 2
 set format x '%g'
 set format y '%g'
 set xlabel 'cells per side n'
 set ylabel 'time / (one factorisation + solve)'
-# Bottom right, under the penalty schemes' lines and above the exact one's, the key covers no point.
-set key at graph 0.98, graph 0.42 right bottom box opaque font ',10'
+# Room above the highest point for the key, so that it covers none.
+set yrange [1:1000]
+set key top right box opaque font ',10'
 set title 'cost in factorisations'
 plot data using (sel('exact', '', 2)):(sel('exact', '', 10)) with linespoints pt 7 lw 2 lc 1 title 'exact constraint', \
      data using (sel('nonlinear', '1e-06', 2)):(sel('nonlinear', '1e-06', 10)) with linespoints pt 5 lc 2 title 'scheme (3a), tol 1e-6', \
      data using (sel('nonlinear', '1e-08', 2)):(sel('nonlinear', '1e-08', 10)) with linespoints pt 4 lc 3 title 'scheme (3a), tol 1e-8', \
-     data using (sel('linear', '1e-06', 2)):(sel('linear', '1e-06', 10)) with linespoints pt 9 lc 4 title 'scheme (5a), tol 1e-6'
+     data using (sel('linear', '1e-06', 2)):(sel('linear', '1e-06', 10)) with linespoints pt 9 lc 4 title 'scheme (5a), tol 1e-6', \
+     data using (failed(2)):(failed(10)) with points pt 2 ps 1.2 lc rgb '#888888' title 'penalty run, not converged'
 unset multiplot

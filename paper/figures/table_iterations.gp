@@ -11,7 +11,7 @@ set xrange [2e-4:4e-7] reverse
 set yrange [30:3000]
 set format x '10^{%L}'
 set xlabel 'stopping tolerance OS'
-set ylabel '(5a) iterations, all eps levels'
+set ylabel '(5a) iterations, all ε levels'
 set grid
 set key outside right center box
 data = 'results/crosscheck_penalty_table.csv'

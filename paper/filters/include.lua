@@ -4,6 +4,60 @@
 -- becomes the Markdown of that file, its headings moved two levels down so that they sit under
 -- the section that includes them. A missing file stops the build: the document never shows a
 -- table that the build did not make.
+-- The reports are plain text first (read in a terminal, grepped, diffed), so they write their few
+-- symbols in ASCII: eps, lambda_1h, m12, +-, <=. In the document they stand beside MathML, so each
+-- such word is set as the mathematics it names. Only whole words are taken, with brackets and
+-- punctuation around them kept, so "epsilon" or an option in code ("--eps") is left alone.
+local ascii_math = {
+  ["eps"] = "\\varepsilon", ["w_eps"] = "w_\\varepsilon", ["eps^-1"] = "\\varepsilon^{-1}",
+  ["lambda"] = "\\lambda", ["lambda_1"] = "\\lambda_1", ["lambda_1h"] = "\\lambda_{1h}", ["1/lambda_1h"] = "1/\\lambda_{1h}",
+  ["m12"] = "m_{12}", ["phi"] = "\\varphi", ["xi"] = "\\xi", ["pi"] = "\\pi", ["theta"] = "\\theta",
+  ["rho"] = "\\rho", ["nu"] = "\\nu", ["w_c"] = "w_c", ["w_free"] = "w_{\\mathrm{free}}",
+  ["C^1"] = "C^1", ["Lap^2"] = "\\Delta^2", ["S^T"] = "S^T",
+}
+-- and any one letter to a numeric power: h^2, h^-4, N^1.02.
+local function power(word)
+  local base, exponent = word:match("^(%a)%^(%-?%d[%d%.]*)$")
+  if base then return base .. "^{" .. exponent:gsub("%.$", "") .. "}" end
+end
+local ascii_symbol = { ["+-"] = "±", ["<="] = "≤", [">="] = "≥" }
+
+-- Words with brackets of their own, taken whole (with trailing punctuation).
+local ascii_whole = { ["q(pi/4)"] = "q(\\pi/4)", ["max|m12|"] = "\\max\\lvert m_{12}\\rvert" }
+
+local function as_math(s)
+  local before, symbol, after = s.text:match("^(%(?)([<>+][=%-])(.*)$")
+  if symbol and ascii_symbol[symbol] then return pandoc.Str(before .. ascii_symbol[symbol] .. after) end
+  local whole, tail = s.text:match("^(.-)([,.;:]*)$")
+  if ascii_whole[whole] then
+    local out = { pandoc.Math("InlineMath", ascii_whole[whole]) }
+    if tail ~= "" then out[2] = pandoc.Str(tail) end
+    return out
+  end
+  local open, word, rest = s.text:match("^([%(]*)([%w_%^%-%./]+)(.*)$")
+  if not word then return nil end
+  -- A word's own trailing full stop or comma is punctuation, not part of it.
+  while word ~= "" and not ascii_math[word] and not power(word) and word:match("[%.%-/]$") do
+    rest = word:sub(-1) .. rest
+    word = word:sub(1, -2)
+  end
+  local tex = ascii_math[word] or power(word)
+  if not tex or rest:match("^[%w_]") then
+    -- A symbol inside a call, max(phi, 0): set what follows the bracket.
+    local call, inner = s.text:match("^([%w_]+%()(.+)$")
+    local set = inner and as_math(pandoc.Str(inner))
+    if not set then return nil end
+    if set.t == "Str" then set = { set } end
+    table.insert(set, 1, pandoc.Str(call))
+    return set
+  end
+  local out = {}
+  if open ~= "" then out[#out + 1] = pandoc.Str(open) end
+  out[#out + 1] = pandoc.Math("InlineMath", tex)
+  if rest ~= "" then out[#out + 1] = pandoc.Str(rest) end
+  return out
+end
+
 function Div(el)
   local path = el.attributes["include"]
   if not path then return nil end
@@ -25,6 +79,8 @@ function Div(el)
       return t
     end,
     Str = function(s)
+      local math = as_math(s)
+      if math then return math end
       if s.text:match("^[<>~%(]?[+%-]?%d[%d%.]*e[+%-]%d+") or s.text:match("^[+%-]%d[%d%.]*") then
         return pandoc.Span({s}, {class = "num"})
       end

@@ -3,7 +3,8 @@
 -- their captions, "The paper's Fig. 2, redrawn"). Tables count from 1 in the main text and as
 -- A.1, A.2, ... in the appendices. A figure with an id, ![...](f.svg){#fig-name}, is referred to as
 -- [Fig.](#fig-name), and the link's text becomes its number. Runs after include.lua, so the tables
--- of the included reports are counted too. A link to a figure id that does not exist stops the build.
+-- of the included reports are counted too. A link to a figure id that does not exist stops the build,
+-- and so does a table without a caption.
 local labels = {}
 local next_figure, next_table, next_appendix_table = 1, 1, 1
 local in_appendix = false
@@ -48,12 +49,10 @@ local function table_block(tbl)
     next_table = next_table + 1
   end
   local long = tbl.caption.long
-  if #long == 0 then
-    -- A report's table has no caption of its own: it is named by the section that holds it.
-    tbl.caption.long = { pandoc.Plain(prefix({ pandoc.Str(heading) }, label)) }
-  else
-    long[1].content = prefix(long[1].content, label)
-  end
+  -- A caption says what to look at; a section's name does not, so a table without one stops the build
+  -- (a report writes its own after the table, "Table: ...").
+  if #long == 0 then error("numbering.lua: a table under \"" .. heading .. "\" has no caption") end
+  long[1].content = prefix(long[1].content, label)
   return tbl
 end
 
