@@ -143,11 +143,12 @@ Runs run_all(const Setup& u) {
 }
 
 const char* label(const std::vector<CheckValues>& runs, const Runs& r) {
-  if (&runs == &r.ff) return "FreeFEM HCT, vertices";
-  if (&runs == &r.edge) return "BFS, edge sampling";
-  if (&runs == &r.gauss) return "BFS, Gauss sampling";
-  if (&runs == &r.nodes) return "BFS, nodal sampling";
-  return "FreeFEM HCT, disk";
+  // Short, so that a table's first column does not wrap: the text above each table says what they are.
+  if (&runs == &r.ff) return "FreeFEM";
+  if (&runs == &r.edge) return "BFS edge";
+  if (&runs == &r.gauss) return "BFS Gauss";
+  if (&runs == &r.nodes) return "BFS nodes";
+  return "FreeFEM disk";
 }
 
 // crosscheck.csv (every run of both scenes) and crosscheck_timings.csv.
@@ -203,21 +204,23 @@ void write_tables(const Setup& u, const Runs& runs) {
 
 void runs_table(std::ostream& md, const Runs& runs, const std::vector<const std::vector<CheckValues>*>& series,
                 bool line_load, const std::string& caption) {
-  md << "| code | grid | unknowns | certified | max w";
+  // Certification is a column of "yes" when every run has it: said once in the caption instead, and
+  // a run without it is marked in its own row.
+  md << "| code | grid | unknowns | max w";
   for (const CheckPoint& c : kCheckPoints) md << " | " << c.name;
   md << " | total force" << (line_load ? " | mean line force | q(0) | q(pi/4)" : "") << " |\n|";
-  for (int c = 0; c < 6 + 3 + (line_load ? 3 : 0); ++c) md << "---|";
+  for (int c = 0; c < 5 + 3 + (line_load ? 3 : 0); ++c) md << "---|";
   md << "\n";
   for (const auto* ser : series)
     for (const auto& r : *ser) {
-      md << "| " << label(*ser, runs) << " | " << r.grid << " | " << r.unknowns << " | " << (r.certified ? "yes" : "**NO**")
-         << " | " << num(r.max_w, noise_w(r, 0));
+      md << "| " << label(*ser, runs) << " | " << r.grid << (r.certified ? "" : " (**not certified**)") << " | "
+         << r.unknowns << " | " << num(r.max_w, noise_w(r, 0));
       for (size_t k = 0; k < r.w_at.size(); ++k) md << " | " << num(r.w_at[k], noise_w(r, 1 + static_cast<int>(k)));
       md << " | " << num(r, r.force);
       if (line_load) md << " | " << num(r, r.mean_line) << " | " << num(r, r.q0) << " | " << num(r, r.q45);
       md << " |\n";
     }
-  md << "\nTable: " << caption << "\n";
+  md << "\nTable: " << caption << " Every run is certified unless marked.\n";
 }
 
 void describe(std::ostream& md, const Setup& u, const Runs& runs) {
@@ -231,23 +234,24 @@ void describe(std::ostream& md, const Setup& u, const Runs& runs) {
      << "## The paper's square, with the contact circle resolved\n\n"
      << "The paper's problem (unit square, f = 0, obstacle R = " << s.height << " on the closed disk of radius "
      << s.radius << " about (" << s.cx << ", " << s.cy << ")), where the plate touches the obstacle along its rim:\n\n"
-     << "* **this code**: Bogner-Fox-Schmit bicubics on n x n squares (a quarter of them solved, by the square's "
+     << "* **this code**: Bogner-Fox-Schmit bicubics on n by n squares (a quarter of them solved, by the square's "
         "mirror lines), edge sampling (the constraint averaged against cubic B-splines of the angle along the circle, "
         "and at the nodes inside it), the exact dual active-set solver with refinement;\n"
      << "* **FreeFEM** (`reference/contact_hct.edp`): HCT (Hsieh-Clough-Tocher) C^1 triangles on structured gmsh "
-        "meshes (`reference/square_with_circle.geo`, an O-grid with 4 n cells along each quarter of the circle, "
+        "meshes (`reference/square_with_circle.geo`, an O-grid with 4, 8, 16, ... cells along each quarter of the circle, "
         "so that mesh vertices lie on it), the constraint at every mesh vertex in the closed disk, FreeFEM's "
         "primal-dual active-set method; its own assembly, quadrature (`tripleQF(qf5pT)`) and sparse solver.\n\n"
      << "Both sample the contact line itself, so max w and the total force converge at a steady order in both "
         "(the orders below). The line load q is the multiplier per unit length on the circle: ours the spline of "
-        "the edge rows (D12), a function of the angle; FreeFEM's the vertex forces over their arcs, fitted by "
+        "the edge rows (D12), a function of the angle; for FreeFEM, the vertex forces over their arcs, fitted by "
         "cos(4 k theta), k = 0 to 3, since point values scatter. The mean line force is the total force over "
         "the circle's length. Digits are printed down to 10 times each code's round-off bound (for this code the size "
-        "of the refinement's last correction (D22), u n^3 relative for an unrefined solve, see exact_solve_roundoff; "
+        "of the refinement's last correction (D22), u n^3 relative for an unrefined solve, u the unit round-off, see `exact_solve_roundoff`; "
      << kFreefemRoundoffRule << " for FreeFEM).\n\n";
   runs_table(md, runs, {&runs.ff, &runs.edge}, true,
-             "The paper's square, every grid of both codes (FreeFEM's meshes named by their cells along each quarter "
-             "of the contact circle). Read down each column: the digits that stop changing are the answer.");
+             "The paper's square, every grid of both codes: FreeFEM's HCT with the constraint at the vertices, on "
+             "meshes named by their cells along each quarter of the contact circle, and BFS, this code, with edge "
+             "sampling on n by n squares. Read down each column: the digits that stop changing are the answer.");
 }
 
 // A limit and its bar as printed: to the digits round-off leaves alone, and never below it. The
@@ -291,7 +295,7 @@ bool square_verdict(std::ostream& md, std::ostream& agreement, const Setup& u, c
     if (q.target > 0) md << " the tolerance at most " << fmt("%.0e", q.target) << " of " << q.name << ";";
   md << " the target is met only where both orders are steady. (The check point on the circle is left out: both "
         "codes hold w = R there.)\n\n"
-        "| quantity | FreeFEM limit | BFS limit | difference | tolerance | relative | target | agree |\n"
+        "| quantity | FreeFEM limit | BFS limit | difference | tolerance | tolerance / value | target | agree |\n"
         "|---|---|---|---|---|---|---|---|\n";
   for (const Quantity& q : quantities(u.scene)) {
     if (q.held) continue;
@@ -313,7 +317,9 @@ bool square_verdict(std::ostream& md, std::ostream& agreement, const Setup& u, c
               << (q.target > 0 ? (met ? "1" : "0") : "") << ',' << (g.agree ? 1 : 0) << '\n';
   }
   md << "\nTable: The two codes' limits side by side. Read the difference against the tolerance, the sum of "
-        "the two bars: the codes agree where the difference is the smaller.\n";
+        "the two bars: the codes agree where the difference is the smaller. Limits are printed to the digits "
+        "round-off leaves them (Appendix B of the document, \"Digits that round-off decides\"); differences are "
+        "taken before rounding.\n";
   md << "\n**" << (all_agree && all_certified ? "The two codes agree" : "The codes DO NOT agree")
      << "** on every quantity within the tolerance their own convergence justifies"
      << (all_certified ? "" : "; some runs are not certified") << (*targets_met ? ", at or under the targets.\n" : ".\n");
@@ -370,7 +376,7 @@ bool against_series(std::ostream& md, const Setup& u, const Runs& runs) {
     for (const CheckValues& r : *ser) {
       const double e = max_distance(r.line, [&](double t) { return s.q(t); }) / s.q_cos.at(0);
       md << "| " << label(*ser, runs) << " | " << r.grid << " | " << fmt("%.2e", e) << " | "
-         << (std::isfinite(before) ? fmt("%.2f", std::log2(before / e)) : "") << " |\n";
+         << (std::isfinite(before) ? fmt("%.2f", std::log2(before / e)) : "—") << " |\n";
       before = e;
     }
   }
@@ -401,21 +407,22 @@ bool disk_verdict(std::ostream& md, const Setup& u, const Runs& runs) {
   md << "\n## A clamped disk on a flat punch: FreeFEM against the closed form\n\n"
      << "A clamped circular plate of radius a = " << d.a << " lifted by a flat circular punch of radius b = " << d.b
      << " and height R = " << d.R << ", f = 0. It touches the punch along the rim only, and its deflection is the "
-        "radial solution (D23)-(D25): w(0) = " << fmt("%.12g", w0) << ", total force 8 pi F = " << fmt("%.12g", force)
+        "radial solution (D23)-(D25): w(0) = " << fmt("%.12g", w0) << ", total force " << fmt("%.12g", force)
      << ". FreeFEM solves it on structured gmsh meshes of the disk (`reference/disk_with_punch.geo`: the punch's "
-        "circle embedded, 4 n cells along each quarter of it) with the same script as the square. Squares cannot "
+        "circle embedded, 4, 8, 16, ... cells along each quarter of it) with the same script as the square. Squares cannot "
         "mesh a disk, so this checks the FreeFEM code on its own, and so makes the square's comparison worth more. "
         "The clamped edge is a polygon through the mesh vertices, whose error is of order h^2.\n\n"
-     << "| grid | unknowns | certified | w(0) | minus closed form | total force | minus closed form |\n"
-        "|---|---|---|---|---|---|---|\n";
+     << "| grid | unknowns | w(0) | w(0) minus closed form | total force | force minus closed form |\n"
+        "|---|---|---|---|---|---|\n";
   bool certified = true;
   for (const auto& r : runs.disk) {
     certified = certified && r.certified;
-    md << "| " << r.grid << " | " << r.unknowns << " | " << (r.certified ? "yes" : "**NO**") << " | " << num(r.w_at.at(0), noise_w(r, 1))
+    md << "| " << r.grid << (r.certified ? "" : " (**not certified**)") << " | " << r.unknowns << " | " << num(r.w_at.at(0), noise_w(r, 1))
        << " | " << fmt_above(r.w_at[0] - w0, noise_w(r, 1), 2) << " | " << num(r, r.force) << " | "
        << fmt_above(r.force - force, noise(r, force), 2) << " |\n";
   }
-  md << "\nTable: FreeFEM on the disk and punch, every mesh, against the closed form.\n";
+  md << "\nTable: FreeFEM on the disk and punch, every mesh, against the closed form. Every run is certified unless "
+        "marked.\n";
   const Quantity qs[] = {{"w(0)", "", [](const CheckValues& r) { return r.w_at.at(0); }},
                          {"total force", "", [](const CheckValues& r) { return r.force; }}};
   const double exact[] = {w0, force};

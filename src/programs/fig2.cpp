@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
          << "# f = 0, exact discrete penalised solution at eps = " << eps << " by the nonlinear scheme (3a), nu = " << nu << ".\n";
     write_file_atomically(out + "/fig2.csv", head.str() + kColumns + csv_rows(sweep));
     write_file_atomically(out + "/fig2_mesh.csv", head.str() + kColumns + csv_rows(study));
-    fit << "\nTable: The lines of Fig. 2: each quantity fitted by a line through the origin in $R$. The last column "
+    fit << "\nTable: The lines of the paper's Fig. 2: each quantity fitted by a line through the origin in $R$. The last column "
            "is the largest distance of a point from its line over the largest value: a value at round-off means the "
            "quantity is proportional to $R$.\n";
     write_file_atomically(out + "/fig2_fit.md", fit.str());

@@ -60,8 +60,6 @@ struct Case {
   std::vector<std::pair<Run, Run>> runs;  // (linear, nonlinear) per published tolerance
 };
 
-std::string yes_no(bool b) { return b ? "yes" : "**no**"; }
-
 // What another machine may change in a case's numbers. The iterates and the path carry the round-off
 // of a solve (EpsLimit::roundoff); the errors carry, besides, the reference's own error.
 struct Noise {
@@ -96,19 +94,19 @@ std::string markdown(const std::vector<Case>& cases, const std::vector<Published
     const std::string caption =
         "h = 1/" + std::to_string(c.n) + ", " + (std::string(to_string(c.kind)) == "gauss" ? "Gauss points" : "nodes") + " (" +
         std::to_string(4 * (c.n - 1) * (c.n - 1)) + " unknowns, $\\lambda_{1h}$ = " + fmt("%.4f", c.lambda1h) +
-        "): read the (5a) iterations against " + (with_paper ? "the paper's and GLT's" : "those on the paper's grid, h = 1/4 (`table.md`)") +
+        "): read the (5a) iterations against " + (with_paper ? "the paper's and GLT's" : "those on the paper's grid, h = 1/4") +
         ", and the error, each run's distance from the $\\varepsilon \\to 0$ limit (known to " +
         reference_error(c.limit) + "; successive differences of the path shrink by " + eps_ratio(c.limit) + ").";
     md << "\n| OS |" << (with_paper ? " paper (5a) | GLT |" : "")
-       << " (5a) iterations | final $\\varepsilon$ | last step | error | estimate | stopped | (3a) iterations | final $\\varepsilon$ | error |\n";
-    md << "|---:|" << (with_paper ? "---:|---:|" : "") << "---:|---:|---:|---:|---:|:---:|---:|---:|---:|\n";
+       << " (5a) iterations | final $\\varepsilon$ | last step | error | estimate | (3a) iterations | (3a) final $\\varepsilon$ | (3a) error |\n";
+    md << "|---:|" << (with_paper ? "---:|---:|" : "") << "---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (std::size_t i = 0; i < table.size(); ++i) {
       const Run &l = c.runs[i].first, &nl = c.runs[i].second;
       md << "| " << fmt("%.3g", table[i].tolerance) << " |";
       if (with_paper) md << " " << table[i].iterations << " | " << table[i].iterations_glt << " |";
-      md << " " << l.iterations << " | " << fmt("%.0e", l.eps) << " | " << fmt_above(l.last_step, z.w, 2) << " | "
+      md << " " << l.iterations << (l.converged ? "" : " (no)") << " | " << fmt("%.0e", l.eps) << " | " << fmt_above(l.last_step, z.w, 2) << " | "
          << fmt_above(l.error, z.reference, 2) << " | " << estimate(l, z.w, c.lambda1h, 2) << " | "
-         << yes_no(l.converged) << " | " << nl.iterations << (nl.converged ? "" : " (no)") << " | "
+         << nl.iterations << (nl.converged ? "" : " (no)") << " | "
          << fmt("%.0e", nl.eps) << " | " << fmt_above(nl.error, z.reference, 2) << " |\n";
     }
     md << "\nTable: " << caption << "\n";
