@@ -10,12 +10,14 @@ set xlabel 'obstacle height R'
 set ylabel 'scaled as in the key'
 set grid
 set xrange [0:*]
+# Room beyond the last point and above the highest, so that none sits on the frame.
+set offsets 0, graph 0.06, graph 0.08, 0
 set yrange [0:*]
 data = 'results/crosscheck_penalty_fig2.csv'
 # columns: R, freefem max_w, max_m12, force, ours max_w, max_m12, force
-plot data using 1:($5 * 100) with lines lc 3 title 'max|w| x 10^2: this code', \
+plot data using 1:($5 * 100) with lines lc 3 title 'max|w| × 10^2: this code', \
      data using 1:($2 * 100) with points pt 2 ps 1.3 lc 3 title 'FreeFEM', \
      data using 1:($6 * 10) with lines lc 2 title 'max|m_{12}| × 10: this code', \
      data using 1:($3 * 10) with points pt 6 ps 1.3 lc 2 title 'FreeFEM', \
-     data using 1:($7 * 0.1) with lines lc 4 title 'total force x 10^{-1}: this code', \
+     data using 1:($7 * 0.1) with lines lc 4 title 'total force × 10^{-1}: this code', \
      data using 1:($4 * 0.1) with points pt 4 ps 1.3 lc 4 title 'FreeFEM'

@@ -54,7 +54,7 @@ splot 'results/fig1_surface.dat' using 1:2:3 with pm3d nocontour notitle, \
 unset contour
 unset colorbox
 
-set title '(c) the section y = 1/2: the plate rests on the rim'
+set title '(c) the section x_2 = 1/2: the plate rests on the rim'
 set origin 0, 0
 set size noratio 1, 0.36
 set xrange [0:1]
@@ -62,7 +62,7 @@ set xrange [0:1]
 set yrange [-0.005:0.14]
 set xtics 0,0.25,1
 set ytics 0,0.02,0.1
-set xlabel 'x'
+set xlabel 'x_1'
 set key inside top right horizontal
 plot 'results/fig1_surface.dat' index 0 every ::0 using 1:(abs($2 - 0.5) < 1e-9 ? $3 : NaN) with lines lw 2 lc rgb '#1f4e8c' title 'w(x, 1/2)', \
      (x >= 0.25 && x <= 0.75 ? 0.0625 : NaN) with filledcurves y1=0 lc rgb '#cfe0f5' title 'obstacle φ'

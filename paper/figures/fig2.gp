@@ -6,7 +6,7 @@ if (fmt eq 'svg') { set terminal svg size 1000,430 dynamic font 'Helvetica,13' }
 set output out
 set datafile separator ','
 # Top left, in headroom kept free above the lines (they all rise from the origin): the key covers no point.
-set key top left box opaque
+set key top left box opaque font ',10' samplen 2
 set offsets 0, graph 0.04, graph 0.4, 0
 set xlabel 'obstacle height R'
 set ylabel 'scaled as in the key'
@@ -27,11 +27,11 @@ fit a1*x data using 3:(pick(n, 4)) via a1
 fit a2*x data using 3:(pick(n, 5)) via a2
 fit a3*x data using 3:(pick(n, 6)) via a3
 set title 'h = 1/4 as in the paper (nodal sampling)'
-plot data using 3:(pick(n, 4) * s1) with points pt 2 ps 1.3 lc 1 title sprintf('1: max|ξ| × 10^{-2}   slope %.5g', a1), \
+plot data using 3:(pick(n, 4) * s1) with points pt 2 ps 1.3 lc 1 title sprintf('1: max|ξ| × 10^{-2}   slope %.6g', a1), \
      a1 * s1 * x with lines lc 1 notitle, \
-     data using 3:(pick(n, 5) * s2) with points pt 6 ps 1.3 lc 2 title sprintf('2: max|m_{12}| × 10   slope %.5g', a2), \
+     data using 3:(pick(n, 5) * s2) with points pt 6 ps 1.3 lc 2 title sprintf('2: max|m_{12}| × 10   slope %.6g', a2), \
      a2 * s2 * x with lines lc 2 notitle, \
-     data using 3:(pick(n, 6) * s3) with points pt 2 ps 1.3 lc 3 title sprintf('3: max|w| × 10^2   slope %.5g', a3), \
+     data using 3:(pick(n, 6) * s3) with points pt 2 ps 1.3 lc 3 title sprintf('3: max|w| × 10^2   slope %.6g', a3), \
      a3 * s3 * x with lines lc 3 notitle
 
 n = fine
@@ -42,12 +42,12 @@ fit a3*x data using 3:(pick(n, 6)) via a3
 a4 = 1
 fit a4*x data using 3:(pick(n, 7)) via a4
 set title sprintf('h = 1/%d (nodal sampling), and the total contact force', fine)
-plot data using 3:(pick(n, 4) * s1) with points pt 2 ps 1.3 lc 1 title sprintf('1: max|ξ| × 10^{-4}   slope %.5g', a1), \
+plot data using 3:(pick(n, 4) * s1) with points pt 2 ps 1.3 lc 1 title sprintf('1: max|ξ| × 10^{-4}   slope %.6g', a1), \
      a1 * s1 * x with lines lc 1 notitle, \
-     data using 3:(pick(n, 5) * s2) with points pt 6 ps 1.3 lc 2 title sprintf('2: max|m_{12}| × 10   slope %.5g', a2), \
+     data using 3:(pick(n, 5) * s2) with points pt 6 ps 1.3 lc 2 title sprintf('2: max|m_{12}| × 10   slope %.6g', a2), \
      a2 * s2 * x with lines lc 2 notitle, \
-     data using 3:(pick(n, 6) * s3) with points pt 2 ps 1.3 lc 3 title sprintf('3: max|w| × 10^2   slope %.5g', a3), \
+     data using 3:(pick(n, 6) * s3) with points pt 2 ps 1.3 lc 3 title sprintf('3: max|w| × 10^2   slope %.6g', a3), \
      a3 * s3 * x with lines lc 3 notitle, \
-     data using 3:(pick(n, 7) * s4) with points pt 4 ps 1.3 lc 4 title sprintf('total force × 10^{-1}   slope %.5g', a4), \
+     data using 3:(pick(n, 7) * s4) with points pt 4 ps 1.3 lc 4 title sprintf('total force × 10^{-1}   slope %.6g', a4), \
      a4 * s4 * x with lines lc 4 notitle
 unset multiplot

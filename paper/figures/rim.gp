@@ -9,7 +9,7 @@ set datafile separator ','
 set xlabel 'angle about the centre of the disk (0: towards the side x = 1)'
 set ylabel 'q, force per unit length'
 set xrange [0:pi/2]
-set xtics ('0' 0, 'pi/8' pi/8, 'pi/4' pi/4, '3pi/8' 3*pi/8, 'pi/2' pi/2)
+set xtics ('0' 0, 'π/8' pi/8, 'π/4' pi/4, '3π/8' 3*pi/8, 'π/2' pi/2)
 set grid
 # Inside, above the curves between the binned samplings' end bars: the key covers no data.
 set key inside top center horizontal maxcols 2 box opaque

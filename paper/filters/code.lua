@@ -43,7 +43,7 @@ function CodeBlock(el)
   if not path then return nil end
   if not name then error("code.lua: a code block names file " .. path .. " but no region") end
   local text, a, b = region(path, name)
-  local caption = pandoc.Para({pandoc.Code(path), pandoc.Str(", lines " .. a .. "–" .. b .. " (region "),
+  local caption = pandoc.Para({pandoc.Code(path), pandoc.Str((a == b and ", line " .. a or ", lines " .. a .. "–" .. b) .. " (region "),
                                pandoc.Code(name), pandoc.Str(")")})
   local listing = pandoc.Div({caption, pandoc.CodeBlock(text, {class = "cpp"})}, {class = "listing"})
   -- fold="..." keeps a long listing out of the reader's way: closed, with that line to open it.

@@ -20,13 +20,13 @@ local function power(word)
   local base, exponent = word:match("^(%a)%^(%-?%d[%d%.]*)$")
   if base then return base .. "^{" .. exponent:gsub("%.$", "") .. "}" end
 end
-local ascii_symbol = { ["+-"] = "±", ["<="] = "≤", [">="] = "≥" }
+local ascii_symbol = { ["+-"] = "±", ["<="] = "≤", [">="] = "≥", ["->"] = "→" }
 
 -- Words with brackets of their own, taken whole (with trailing punctuation).
 local ascii_whole = { ["q(pi/4)"] = "q(\\pi/4)", ["max|m12|"] = "\\max\\lvert m_{12}\\rvert" }
 
 local function as_math(s)
-  local before, symbol, after = s.text:match("^(%(?)([<>+][=%-])(.*)$")
+  local before, symbol, after = s.text:match("^(%(?)([<>+%-][=%->])(.*)$")
   if symbol and ascii_symbol[symbol] then return pandoc.Str(before .. ascii_symbol[symbol] .. after) end
   local whole, tail = s.text:match("^(.-)([,.;:]*)$")
   if ascii_whole[whole] then
@@ -69,13 +69,13 @@ function Div(el)
   local blocks = pandoc.read(text, "markdown-smart").blocks:walk({
     Header = function(h) h.level = math.min(h.level + 2, 6); return h end,
     -- 6.25e-07 must not wrap after its "e-": numbers go in a span the style sheet keeps whole.
-    -- A last column of sentences ("why not", "message") beside many columns of numbers would wrap a
+    -- A last column of sentences (the bad-input table's "message") beside other columns would wrap a
     -- word a line: the style sheet gives it room by this class.
     Table = function(t)
       local head = t.head and t.head.rows and t.head.rows[1]
       local last = head and head.cells[#head.cells]
       local name = last and pandoc.utils.stringify(last.contents) or ""
-      if name == "why not" or name == "message" then t.attr.classes:insert("text-last") end
+      if name == "message" then t.attr.classes:insert("text-last") end
       return t
     end,
     Str = function(s)
@@ -84,6 +84,19 @@ function Div(el)
       if s.text:match("^[<>~%(]?[+%-]?%d[%d%.]*e[+%-]%d+") or s.text:match("^[+%-]%d[%d%.]*") then
         return pandoc.Span({s}, {class = "num"})
       end
+    end,
+  })
+  -- "64 x 64", "1.01 x the sag": a lone x after a number is a times sign.
+  blocks = blocks:walk({
+    Inlines = function(inlines)
+      for i = 3, #inlines do
+        local x, before = inlines[i], inlines[i - 2]
+        if x.t == "Str" and x.text == "x" and inlines[i - 1].t == "Space" then
+          local number = before.t == "Str" and before.text or before.t == "Span" and pandoc.utils.stringify(before) or ""
+          if number:match("%d$") then inlines[i] = pandoc.Str("×") end
+        end
+      end
+      return inlines
     end,
   })
   return pandoc.Div(blocks, {class = "included", ["data-source"] = path})

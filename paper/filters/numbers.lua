@@ -29,6 +29,11 @@ local function fill(text)
 end
 
 -- Pandoc splits "{{a}}-{{b}}" into several Str; each one carries whole keys, since keys hold no spaces.
-function Str(el) el.text = fill(el.text); return el end
+-- A value like 8.3e-04 must not break after its "e-": it goes in the span the style sheet keeps whole.
+function Str(el)
+  el.text = fill(el.text)
+  if el.text:match("%de[+%-]%d") then return pandoc.Span({ el }, { class = "num" }) end
+  return el
+end
 function Math(el) el.text = fill(el.text); return el end
 function RawInline(el) el.text = fill(el.text); return el end
