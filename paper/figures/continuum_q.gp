@@ -7,7 +7,7 @@ if (fmt eq 'svg') { set terminal svg size 1000,430 dynamic font 'Helvetica,13' }
 set output out
 set datafile separator ','
 data = 'results/continuum_q.csv'
-set xrange [0:pi/2]
+set xrange [-0.04:pi/2 + 0.04]  # room so that the points at 0 and pi/2 stay off the frame
 set xtics ('0' 0, 'π/8' pi/8, 'π/4' pi/4, '3π/8' 3*pi/8, 'π/2' pi/2)
 set xlabel 'angle θ about the centre of the disk'
 set grid
@@ -21,11 +21,11 @@ set key top center box opaque
 plot data using 3:(is('edge', 128, 5)) with lines lw 3 lc rgb '#bbbbbb' title 'series', \
      data using 3:(is('edge-points', 128, 4)) with points pt 7 ps 0.6 lc 2 title 'point rows', \
      data using 3:(is('edge', 128, 4)) with lines lw 1.5 lc 1 title 'spline rows'
-set title 'spline rows: |q - q_{series}| / mean'
+set title 'spline rows: |q − q_{series}| / mean'
 set ylabel ''
 set logscale y
 set format y '10^{%L}'
-set yrange [1e-7:1e2]
+set yrange [1e-9:1e2]
 set key top center horizontal maxcols 5 box opaque
 plot for [n in '32 64 128 256 512'] data using 3:(is('edge', n + 0, 6)) with lines lw 1.5 title 'n = '.n
 unset multiplot

@@ -5,13 +5,14 @@
 if (fmt eq 'svg') { set terminal svg size 640,430 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 640,430 font 'Helvetica,11' }
 set output out
 set datafile separator ','
+# Top left, in headroom above the lines (they all rise from the origin): the key covers none of them.
 set key top left box opaque
 set xlabel 'obstacle height R'
 set ylabel 'scaled as in the key'
 set grid
 set xrange [0:*]
 # Room beyond the last point and above the highest, so that none sits on the frame.
-set offsets 0, graph 0.06, graph 0.08, 0
+set offsets 0, graph 0.06, graph 0.35, 0
 set yrange [0:*]
 data = 'results/crosscheck_penalty_fig2.csv'
 # columns: R, freefem max_w, max_m12, force, ours max_w, max_m12, force

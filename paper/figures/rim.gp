@@ -8,7 +8,7 @@ set output out
 set datafile separator ','
 set xlabel 'angle about the centre of the disk (0: towards the side x = 1)'
 set ylabel 'q, force per unit length'
-set xrange [0:pi/2]
+set xrange [-0.04:pi/2 + 0.04]  # room so that the points at 0 and pi/2 stay off the frame
 set xtics ('0' 0, 'π/8' pi/8, 'π/4' pi/4, '3π/8' 3*pi/8, 'π/2' pi/2)
 set grid
 # Inside, above the curves between the binned samplings' end bars: the key covers no data.

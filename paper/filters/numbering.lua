@@ -1,13 +1,13 @@
 -- Every figure and table gets a number, so that the prose can point at it and a printed page can be
 -- read on its own. Figures count from 1 in the order they appear (the paper's own figures say so in
 -- their captions, "The paper's Fig. 2, redrawn"). Tables count from 1 in the main text and as
--- A.1, A.2, ... in the appendices. A figure with an id, ![...](f.svg){#fig-name}, is referred to as
+-- A.1, A.2, ..., B.1, ... in the appendices. A figure with an id, ![...](f.svg){#fig-name}, is referred to as
 -- [Fig.](#fig-name), and the link's text becomes its number. Runs after include.lua, so the tables
 -- of the included reports are counted too. A link to a figure id that does not exist stops the build,
 -- and so does a table without a caption.
 local labels = {}
 local next_figure, next_table, next_appendix_table = 1, 1, 1
-local in_appendix = false
+local appendix = nil  -- the letter of the appendix being read, nil in the main text
 local heading = ""
 
 local function prefix(caption, label)
@@ -41,8 +41,8 @@ end
 
 local function table_block(tbl)
   local label
-  if in_appendix then
-    label = "Table A." .. next_appendix_table .. "."
+  if appendix then
+    label = "Table " .. appendix .. "." .. next_appendix_table .. "."
     next_appendix_table = next_appendix_table + 1
   else
     label = "Table " .. next_table .. "."
@@ -59,7 +59,12 @@ end
 local function number_blocks(blocks)
   for i, b in ipairs(blocks) do
     if b.t == "Header" then
-      if b.level == 1 then in_appendix = b.identifier:match("^appendix") ~= nil end
+      if b.level == 1 then
+        -- Each appendix counts its own tables: B.1 follows A.48, not A.49.
+        local letter = b.identifier:match("^appendix%-(%a)")
+        if letter and letter:upper() ~= appendix then next_appendix_table = 1 end
+        appendix = letter and letter:upper() or nil
+      end
       if b.level <= 3 then heading = pandoc.utils.stringify(b.content) end
     elseif b.t == "Table" then
       blocks[i] = table_block(b)
