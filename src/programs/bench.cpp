@@ -272,7 +272,7 @@ void penalty_table(std::ostream& md, const std::vector<Outcome>& outcomes, const
     }
     const auto b = baseline_at.find(r.job.n);
     const auto e = exact_at.find(r.job.n);
-    md << "| " << (r.job.solver == "linear" ? "(5a) linear" : "(3a) nonlinear") << " | " << fmt("%g", r.job.tol) << " | "
+    md << "| " << (r.job.solver == "linear" ? "(5a)" : "(3a)") << " | " << fmt("%g", r.job.tol) << " | "
        << r.job.n << " | " << (r.v.at("converged") != 0 ? "yes" : "**no**") << " | " << fmt("%.0f", r.v.at("iterations"))
        << " | " << fmt("%.0f", r.v.at("factorizations")) << " | " << fmt("%.3g", r.v.at("seconds")) << " | "
        << (b != baseline_at.end() ? fmt("%.1f", r.v.at("seconds") / baseline_seconds(*b->second)) : "") << " | "
@@ -331,8 +331,8 @@ void peer_target(std::ostream& md, const std::vector<Outcome>& outcomes, const B
   }
   const double ratio = fastest->v.at("seconds") / e->second->v.at("seconds");
   const bool certified = fastest->v.at("converged") != 0;
-  md << "ours " << fmt("%.3g", e->second->v.at("seconds")) << " s, the faster variant run there ("
-     << fastest->job.solver.substr(7) << ") " << fmt("%.3g", fastest->v.at("seconds")) << " s: " << fmt("%.1f", ratio)
+  md << "ours " << fmt("%.3g", e->second->v.at("seconds")) << " s against " << fmt("%.3g", fastest->v.at("seconds"))
+     << " s for the faster variant run there (" << fastest->job.solver.substr(7) << "): ours is " << fmt("%.1f", ratio)
      << " times faster (target >= 3: " << met(ratio >= 3) << ")";
   if (!certified)
     md << ", measured on an uncertified run: " << fastest->job.solver.substr(7) << " stopped with certificate "
@@ -382,8 +382,8 @@ void targets(std::ostream& md, const ByN& exact_at, const ByN& baseline_at, int 
   const auto e1024 = exact_at.find(1024);
   if (e1024 != exact_at.end())
     md << "- n = 1024 (" << fmt("%.0f", e1024->second->v.at("unknowns")) << " unknowns): completed in "
-       << fmt("%.3g", e1024->second->v.at("seconds")) << " s with peak memory " << fmt("%.2f", e1024->second->peak_mib / 1024)
-       << " GiB (within 24 GiB: " << met(e1024->second->peak_mib < 24 * 1024) << ").\n";
+       << fmt("%.3g", e1024->second->v.at("seconds")) << " s with peak memory " << fmt("%.0f", e1024->second->peak_mib) << " MiB, "
+       << fmt("%.2f", e1024->second->peak_mib / 1024) << " GiB (within 24 GiB: " << met(e1024->second->peak_mib < 24 * 1024) << ").\n";
   else
     md << "- n = 1024: not run (`--max-exact` = " << max_exact << ").\n";
   std::vector<double> N, T;
