@@ -393,7 +393,7 @@ std::string table_md(const Setup& s, const TablePart& part, const CsvTable& ours
   for (size_t k = 0; k < s.table_levels.size(); ++k) md << "---:|";
   md << "\n";
   for (const TableRow& t : table) {
-    md << "| " << fmt("%g", t.paper.tolerance) << " | " << t.paper.iterations << " | " << t.paper.iterations_glt << " | "
+    md << "| " << fmt_exact_e(t.paper.tolerance) << " | " << t.paper.iterations << " | " << t.paper.iterations_glt << " | "
        << t.ours_nodes << " | " << t.ours_gauss << " |";
     for (int c : t.freefem) md << " " << (c < 0 ? std::string("not converged") : std::to_string(c)) << " |";
     md << "\n";

@@ -102,7 +102,7 @@ std::string markdown(const std::vector<Case>& cases, const std::vector<Published
     md << "|---:|" << (with_paper ? "---:|---:|" : "") << "---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (std::size_t i = 0; i < table.size(); ++i) {
       const Run &l = c.runs[i].first, &nl = c.runs[i].second;
-      md << "| " << fmt("%.3g", table[i].tolerance) << " |";
+      md << "| " << fmt_exact_e(table[i].tolerance) << " |";
       if (with_paper) md << " " << table[i].iterations << " | " << table[i].iterations_glt << " |";
       md << " " << l.iterations << (l.converged ? "" : " (no)") << " | " << fmt("%.0e", l.eps) << " | " << fmt_above(l.last_step, z.w, 2) << " | "
          << fmt_above(l.error, z.reference, 2) << " | " << estimate(l, z.w, c.lambda1h, 2) << " | "

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 namespace plate {
@@ -19,6 +20,16 @@ inline std::string fmt_up(double v) {
   const double p = std::pow(10.0, std::floor(std::log10(v)));
   double lead = std::ceil(v / p * (1 - 1e-12));  // 3e-11 stays 3e-11 when it is exact
   return fmt("%.0e", lead * p);
+}
+
+// A given value (a tolerance the paper prints, 1.3e-4 or 6.25e-7) in the exponent form with the
+// fewest digits that read back as the same double, so that a column of them has one look.
+inline std::string fmt_exact_e(double v) {
+  for (int d = 0; d < 17; ++d) {
+    const std::string s = fmt(("%." + std::to_string(d) + "e").c_str(), v);
+    if (std::strtod(s.c_str(), nullptr) == v) return s;
+  }
+  return fmt("%.17e", v);
 }
 
 // @region fmt-above
