@@ -68,7 +68,6 @@ function Div(el)
   -- Without smart punctuation: a report that says "--scheme nonlinear" must keep its two dashes.
   local blocks = pandoc.read(text, "markdown-smart").blocks:walk({
     Header = function(h) h.level = math.min(h.level + 2, 6); return h end,
-    -- 6.25e-07 must not wrap after its "e-": numbers go in a span the style sheet keeps whole.
     -- A last column of sentences (the bad-input table's "message") beside other columns would wrap a
     -- word a line: the style sheet gives it room by this class.
     Table = function(t)
@@ -78,6 +77,8 @@ function Div(el)
       if name == "message" then t.attr.classes:insert("text-last") end
       return t
     end,
+    -- A symbol the reports write in ASCII is set as mathematics; 6.25e-07 must not wrap after its
+    -- "e-": numbers go in a span the style sheet keeps whole.
     Str = function(s)
       local math = as_math(s)
       if math then return math end
