@@ -4,6 +4,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_set>
@@ -11,6 +12,7 @@
 #include "contact.hpp"
 #include "dual_active_set.hpp"
 #include "norms.hpp"
+#include "rim_exchange.hpp"
 #include "stopwatch.hpp"
 
 namespace plate {
@@ -260,24 +262,79 @@ NodeSet predict_active(const Grid& coarse, const VectorXd& wc, const Problem& fi
 // @end grid-sequencing
 }  // namespace
 
-ExactResult solve_exact(const Problem& p, const Field& obstacle, const Field& load, const ExactOptions& o) {
+namespace {
+// @region rim-follows-contact
+// Eq. (D28): the rows on a circle fitted to the contact. The coarser grid's contact says where the
+// plate touches the whole rim (periodic splines, as on the paper's scene) or which arcs it touches
+// (splines there, points elsewhere). After each solve the layout is checked against the contact it
+// found, and laid out again from it if the splines reach past the contact's end; points are added
+// wherever the plate dips between point rows. After three layouts that do not fit, points alone.
+ExactResult solve_rim(Problem& p, const Field& obstacle, const ExactOptions& o, const Problem* coarse, const VectorXd& wc,
+                      const VectorXd& lc, double margin, const NodeSet& predicted) {
+  RimLayout layout;  // periodic
+  // A row touches if it lies within the certificate's tolerance of the obstacle, or within the depth
+  // the plate dips below it between rows: an averaged row cannot tell a gap smaller than that from
+  // contact (on the paper's scene, n = 32, the diagonal's row lifts 5e-6 where the plate dips 8e-6).
+  auto touch = [&](const Problem& q, const VectorXd& w) {
+    return std::max(o.tol * value_scale(w), dip_below_edge(q, w, obstacle));
+  };
+  if (coarse && rim_follows_contact(*coarse) && !coarse->sampling.rim.periodic) {
+    const ContactArcs c = rim_contact(*coarse, wc, lc, touch(*coarse, wc));
+    if (!c.whole) layout = rim_layout_for(p, c);
+  }
+  Cholesky chol;  // one factor for every layout this grid tries
+  chol.factorize(p.K);
+  const RowExchange exchange = [&](Problem& q, const VectorXd& w, double slack) {
+    const std::vector<double> at = rim_dips(q, w, obstacle, slack);
+    if (!at.empty()) append_rim_points(q, at, obstacle);
+    return static_cast<int>(at.size());
+  };
+  NodeSet initial = predicted;
+  ExactResult r;
+  int layouts = 0, exchanged = 0;
+  for (int round = 0;; ++round) {
+    if (!layout.periodic) {
+      lay_out_rim(p, layout, obstacle);
+      ++layouts;
+      initial = coarse && round == 0 ? predict_active(coarse->grid, wc, p, margin) : predict_active(p.grid, r.w, p, margin);
+    }
+    r = solve_exact_rows(p, o, initial, layout.periodic ? RowExchange{} : exchange, &chol);
+    exchanged += r.levels.back().exchanged;
+    if (!r.converged || rim_layout_fits(p, r.w, r.lambda, touch(p, r.w))) break;
+    layout = round < 2 ? rim_layout_for(p, rim_contact(p, r.w, r.lambda, touch(p, r.w))) : rim_points_only(p);
+  }
+  r.levels.back().layouts = layouts;
+  r.levels.back().exchanged = exchanged;
+  r.levels.back().factorizations = chol.factorizations();
+  return r;
+}
+// @end rim-follows-contact
+}  // namespace
+
+ExactResult solve_exact(Problem& p, const Field& obstacle, const Field& load, const ExactOptions& o) {
   validate(o);
   const Grid& g = p.grid;
   std::vector<ExactLevel> coarse_levels;
-  Grid coarse;
-  VectorXd wc;
+  std::optional<Problem> coarse;
+  VectorXd wc, lc;
   if (o.nested && g.nx % 2 == 0 && g.ny % 2 == 0 && g.whole_nx() / 2 >= o.coarsest) {
-    coarse = coarser(g);
-    ExactResult rc = solve_exact(coarse, p.spec, obstacle, load, o);
+    const auto t0 = Clock::now();
+    coarse = make_problem(coarser(g), p.spec, obstacle, load);
+    const double seconds_assemble = seconds_since(t0);
+    ExactResult rc = solve_exact(*coarse, obstacle, load, o);
+    rc.levels.back().seconds += seconds_assemble;
     coarse_levels = rc.levels;
     wc = std::move(rc.w);  // even an uncertified coarse answer predicts the contact set well
+    lc = std::move(rc.lambda);
   }
   const auto t0 = Clock::now();
   const double margin = p.sampling.nodal_bounds() || !wc.size() ? 0.0 : 1e-4 * max_nodal_abs(wc);
-  NodeSet initial = wc.size() ? predict_active(coarse, wc, p, margin) : NodeSet{};
+  NodeSet initial = wc.size() ? predict_active(coarse->grid, wc, p, margin) : NodeSet{};
   const double seconds_predict = seconds_since(t0);
-  ExactResult r = solve_exact(p, o, std::move(initial));
+  ExactResult r = rim_follows_contact(p) ? solve_rim(p, obstacle, o, coarse ? &*coarse : nullptr, wc, lc, margin, initial)
+                                         : solve_exact(p, o, std::move(initial));
   r.levels.back().seconds += seconds_predict;
+  if (o.on_level) o.on_level(p, r);
   r.levels.insert(r.levels.begin(), coarse_levels.begin(), coarse_levels.end());
   return r;
 }
@@ -289,7 +346,7 @@ ExactResult solve_exact(const Grid& g, const Field& obstacle, const Field& load,
 ExactResult solve_exact(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load,
                         const ExactOptions& o) {
   const auto t0 = Clock::now();
-  const Problem p = make_problem(g, spec, obstacle, load);
+  Problem p = make_problem(g, spec, obstacle, load);
   const double seconds_assemble = seconds_since(t0);
   ExactResult r = solve_exact(p, obstacle, load, o);
   r.levels.back().seconds += seconds_assemble;
@@ -309,6 +366,8 @@ SceneSolution solve_exact_scene(const Grid& g, const SamplingSpec& spec, const F
   s.unfolded = make_samples(g, spec, obstacle);  // validates the whole plate's obstacle first
   s.solved = make_problem(part_of(g, s.mirrors), spec, obstacle, load);
   s.result = solve_exact(s.solved, obstacle, load, o);
+  // Rows laid out for the contact: the whole plate's are the part's layout with its images.
+  if (s.solved.sampling.rim_laid_out()) lay_out_rim(*s.unfolded, s.solved.sampling.rim, obstacle);
   s.part_w = std::move(s.result.w), s.part_lambda = std::move(s.result.lambda);
   const Sampling& whole = s.unfolded->sampling;
   s.result.w = unfold_unknowns(g, s.solved.grid, s.part_w);

@@ -29,6 +29,8 @@ Certificate certify(const Problem& p, const VectorXd& w, const VectorXd& lambda)
 // Why a certificate fails tol, entry by entry.
 std::string certificate_failure(const Certificate& c, double tol);
 
+struct ExactResult;
+
 struct ExactOptions {
   double tol = 1e-10;       // every certificate entry must end <= tol
   int max_iter = 1000;      // active-set iterations per grid, both methods together
@@ -41,6 +43,9 @@ struct ExactOptions {
   // active-set iterations: the grid's cells along x, the iteration, the rows held, and how many
   // join or leave next. Empty: silent.
   std::function<void(int cells, int iteration, int held, int changed)> on_iterate;
+  // Every grid of a sequence as it is done, coarsest first (the last is the grid asked for): its
+  // problem (the part of the plate solved, with the rows it was solved with) and answer. Empty: none.
+  std::function<void(const Problem& p, const ExactResult& r)> on_level;
 };
 void validate(const ExactOptions& o);
 
@@ -55,6 +60,8 @@ struct ExactLevel {
   int factorizations = 0;
   long correction_columns = 0; // solves spent on small active-set changes
   Refinement refinement;       // dual solver: the refinement's corrections (D22); empty if not refined
+  int layouts = 0;             // rows on a circle laid out for the contact: layouts solved (0: periodic splines only)
+  int exchanged = 0;           // point rows added where the plate dipped between rows (rim_exchange.hpp)
   double seconds = 0;
 };
 
@@ -79,7 +86,9 @@ ExactResult solve_exact(const Grid& g, const Field& obstacle, const Field& load,
 ExactResult solve_exact(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load,
                         const ExactOptions& o);
 // The same on a problem already assembled (from the same obstacle and load, sampled as p.spec says).
-ExactResult solve_exact(const Problem& p, const Field& obstacle, const Field& load, const ExactOptions& o);
+// Default rows on a circle follow the contact (rim_exchange.hpp, D28): p's sampling and obstacle
+// samples are then those the answer was found with, which the result's lambda and active refer to.
+ExactResult solve_exact(Problem& p, const Field& obstacle, const Field& load, const ExactOptions& o);
 
 // A scene solved exactly on the part of the plate its mirror lines leave (mirror.hpp), or whole when
 // it has none or `use_mirrors` is false. The answer is the whole plate's either way: `result.w` and

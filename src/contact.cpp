@@ -76,7 +76,7 @@ double penalty_backward_error(const Problem& p, const VectorXd& w, double eps) {
 
 double dip_below_edge(const Problem& p, const VectorXd& w, const Field& obstacle) {
   if (!has_edge(p.spec.kind) || p.spec.edge.empty()) return NAN;
-  const EdgePoints e = edge_points(p.spec.edge, p.grid.h / 8);
+  const EdgePoints e = edge_points(p.spec.edge, p.grid.h / 32);
   double dip = 0;
   for (int k = 0; k < e.size(); ++k) {
     const double phi = obstacle_on_edge(obstacle, e.x[k], e.y[k], e.nx[k], e.ny[k], p.grid.h);

@@ -40,7 +40,7 @@ double penalty_residual(const Problem& p, const VectorXd& w, double eps);
 double penalty_backward_error(const Problem& p, const VectorXd& w, double eps);
 
 // How far the plate dips below the obstacle along its edge curve between the rows that constrain it
-// (spline rows average w, point rows hold it at points): max over points h / 8 apart on the curve of
+// (spline rows average w, point rows hold it at points): max over points h / 32 apart on the curve of
 // phi - w_h, 0 if the plate is nowhere below. NaN without an edge curve.
 double dip_below_edge(const Problem& p, const VectorXd& w, const Field& obstacle);
 

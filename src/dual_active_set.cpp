@@ -87,16 +87,23 @@ double answer_scale(const Problem& p, const VectorXd& w_free) {
   return s;
 }
 
-// @region rows-solver
 ExactResult solve_exact_rows(const Problem& p, const ExactOptions& o, const NodeSet& candidates) {
+  // Without an exchange nothing is appended to p: the solve only reads it.
+  return solve_exact_rows(const_cast<Problem&>(p), o, candidates, RowExchange{}, nullptr);
+}
+
+// @region rows-solver
+ExactResult solve_exact_rows(Problem& p, const ExactOptions& o, const NodeSet& candidates, const RowExchange& exchange,
+                             const Cholesky* factor) {
   validate(o);
   const auto t0 = Clock::now();
-  const int rows = p.sampling.size();
+  int rows = p.sampling.size();
   ExactResult res;
   ExactLevel level;
   level.cells = p.grid.whole_nx();
-  Cholesky chol;
-  chol.factorize(p.K);
+  Cholesky own;
+  if (!factor) own.factorize(p.K);
+  const Cholesky& chol = factor ? *factor : own;
   const VectorXd w0 = chol.solve(p.F);  // the plate with no obstacle
   const double slack = 0.1 * o.tol * std::max(answer_scale(p, w0), 1e-300);
   NodeSet in_schur(rows, 0);
@@ -142,6 +149,14 @@ ExactResult solve_exact_rows(const Problem& p, const ExactOptions& o, const Node
       level.refinement = refine_held(p, chol, schur, mu, w);
       fresh = violated_rows(p.sampling.S * w - p.phi, in_schur, slack, cap);
     }
+    // Every row holds: rows where the plate dips between them, if the problem takes them.
+    if (fresh.empty() && exchange) {
+      const int added = exchange(p, w, slack);
+      level.exchanged += added;
+      rows = p.sampling.size();
+      in_schur.resize(rows, 0);
+      fresh = violated_rows(p.sampling.S * w - p.phi, in_schur, slack, cap);
+    }
     if (o.on_iterate && level.pdas_iterations > 0)
       o.on_iterate(p.grid.whole_nx(), level.pdas_iterations, static_cast<int>(schur.rows.size()), static_cast<int>(fresh.size()));
     if (fresh.empty()) break;
@@ -157,7 +172,7 @@ ExactResult solve_exact_rows(const Problem& p, const ExactOptions& o, const Node
   if (res.message.empty() && res.certificate.worst() > o.tol) res.message = certificate_failure(res.certificate, o.tol);
   res.converged = res.message.empty();
   level.active = members(res.active);
-  level.factorizations = chol.factorizations();
+  level.factorizations = own.factorizations();
   level.correction_columns = schur.columns;
   level.seconds = seconds_since(t0);
   res.levels.push_back(level);

@@ -3,7 +3,10 @@
 // One factorisation of K; the rows that may touch get a column of G = S K^{-1} S^T each, and the
 // small dense dual problem on them is solved by the dual active-set method (D20).
 #pragma once
+#include <functional>
+
 #include "active_set.hpp"
+#include "cholesky.hpp"
 
 namespace plate {
 
@@ -19,5 +22,14 @@ constexpr int kGramBlock = 32;
 double answer_scale(const Problem& p, const VectorXd& w_free);
 
 ExactResult solve_exact_rows(const Problem& p, const ExactOptions& o, const NodeSet& candidates);
+
+// Rows a solve adds to its problem as it goes. Called whenever the rows it has are all satisfied, it
+// appends to p the rows that the answer w violates between them by more than `slack` (an exchange
+// method for a constraint on a whole curve, rim_exchange.hpp) and returns how many; the rows before
+// them stay as they were.
+using RowExchange = std::function<int(Problem& p, const VectorXd& w, double slack)>;
+// The same with an exchange, and with K's factor given (null: factorised here).
+ExactResult solve_exact_rows(Problem& p, const ExactOptions& o, const NodeSet& candidates, const RowExchange& exchange,
+                             const Cholesky* factor);
 
 }  // namespace plate

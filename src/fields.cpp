@@ -2,6 +2,8 @@
 // its parser and variables on the heap and the Field closure shares them.
 #include "fields.hpp"
 
+#include <cfloat>
+
 #include <muParser.h>
 
 #include <cmath>
@@ -10,10 +12,13 @@
 
 namespace plate {
 
+// The closed disk, with a few units of round-off to spare on its rim: a point on the circle
+// (the grid nodes of a Pythagorean triple, (0.3, 0.35) about (0.5, 0.5) with r = 1/4) is computed
+// on either side of it by rounding, and would break the scene's mirror symmetry by chance.
 Field cylinder(double cx, double cy, double r, double R) {
   return [=](double x, double y) {
     const double dx = x - cx, dy = y - cy;
-    return dx * dx + dy * dy <= r * r ? R : -INFINITY;
+    return dx * dx + dy * dy <= r * r * (1 + 8 * DBL_EPSILON) ? R : -INFINITY;
   };
 }
 

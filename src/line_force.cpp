@@ -40,7 +40,25 @@ LineForce line_force(const Problem& p, const VectorXd& lambda, int harmonics) {
   f.theta = s.edge.theta;
   f.length = s.edge.length;
   const int m = s.edge_size();
-  if (s.edge_spline_degree > 0) {
+  if (s.rim_laid_out()) {
+    f.spline_degree = s.edge_spline_degree;
+    f.layout = s.rim;
+    for (const SplineArc& a : s.rim.arcs) f.arc_coefficients.emplace_back(a.basis_count(f.spline_degree), NAN);
+    int points = 0;
+    for (int k = 0; k < m; ++k) {
+      const RimRow& r = s.rim_rows[k];
+      if (r.point()) {
+        f.point_theta.push_back(s.edge.theta[k]), f.point_q.push_back(lambda[s.edge_begin + k]);
+        ++points;
+      } else {
+        f.arc_coefficients[r.arc][r.basis] = lambda[s.edge_begin + k];
+      }
+    }
+    bool whole = points == static_cast<int>(s.rim.points.size());
+    for (const auto& c : f.arc_coefficients)
+      for (double v : c) whole = whole && !std::isnan(v);
+    if (!whole) throw std::invalid_argument("line_force: the rows of part of a circle (unfold them first)");
+  } else if (s.edge_spline_degree > 0) {
     if (m != s.edge_knots) throw std::invalid_argument("line_force: the spline rows of part of a circle (unfold them first)");
     f.spline_degree = s.edge_spline_degree;
     f.coefficients.assign(lambda.data() + s.edge_begin, lambda.data() + s.size());
@@ -48,7 +66,8 @@ LineForce line_force(const Problem& p, const VectorXd& lambda, int harmonics) {
   for (int k = 0; k < m; ++k) {
     const int row = s.edge_begin + k;
     // Points: the multiplier is q there. B-spline rows: q(theta_k) = sum_i lambda_i B(k - i).
-    f.q.push_back(s.edge_spline_degree > 0 ? line_force_value(f, f.theta[k]) : lambda[row]);
+    const bool point = s.edge_spline_degree == 0 || (s.rim_laid_out() && s.rim_rows[k].point());
+    f.q.push_back(point ? lambda[row] : line_force_value(f, f.theta[k]));
     f.total += s.weights[row] * lambda[row];
   }
   summarise(f);
@@ -104,6 +123,22 @@ LineForce binned_line_force(const Problem& p, const VectorXd& lambda, const Edge
 
 double line_force_value(const LineForce& f, double theta) {
   if (f.spline_degree == 0) return line_force_at(f, theta);
+  if (f.laid_out()) {
+    for (size_t a = 0; a < f.layout.arcs.size(); ++a)
+      if (f.layout.arcs[a].contains(theta)) {
+        double q = 0;
+        for (size_t j = 0; j < f.arc_coefficients[a].size(); ++j)
+          q += f.arc_coefficients[a][j] * clamped_bspline(f.layout.arcs[a], f.spline_degree, static_cast<int>(j), theta);
+        return q;
+      }
+    int best = -1;
+    double dist = INFINITY;
+    for (size_t i = 0; i < f.point_theta.size(); ++i) {
+      const double d = std::abs(std::remainder(f.point_theta[i] - theta, 2 * M_PI));
+      if (d < dist) dist = d, best = static_cast<int>(i);
+    }
+    return best < 0 ? 0.0 : f.point_q[best];
+  }
   const int m = static_cast<int>(f.coefficients.size()), p = f.spline_degree;
   const double u = theta / (2 * M_PI / m);  // in knot spacings
   const int first = static_cast<int>(std::floor(u - 0.5 * (p + 1)));

@@ -24,6 +24,12 @@ struct LineForce {
   // values at the knots. Degree 0: point rows, q known at the points only.
   int spline_degree = 0;
   std::vector<double> coefficients;
+  // Rows laid out for a contact (D28): q is the splines' sum on each arc of `layout`, and off the
+  // arcs the value at the nearest point row. `coefficients` is then empty.
+  RimLayout layout;
+  std::vector<std::vector<double>> arc_coefficients;  // per arc of layout, per basis
+  std::vector<double> point_theta, point_q;           // the point rows
+  bool laid_out() const { return spline_degree > 0 && !layout.periodic; }
   bool empty() const { return q.empty(); }
 };
 

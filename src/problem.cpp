@@ -94,19 +94,39 @@ static SpMat sampling_mass(const Grid& g, const Sampling& s) {
   return M;
 }
 
+namespace {
+// phi at the samples from `first` on.
+void sample_obstacle(Problem& p, const Field& obstacle, int first) {
+  p.phi.conservativeResize(p.sampling.size());
+  for (int i = first; i < p.sampling.size(); ++i) {
+    const int k = i - p.sampling.edge_begin;
+    const double v = k >= 0 ? on_edge(obstacle, p.sampling.edge, k, p.grid.h) : obstacle(p.sampling.x[i], p.sampling.y[i]);
+    check_obstacle_value(p.sampling.x[i], p.sampling.y[i], v);
+    p.phi[i] = v;
+  }
+}
+}  // namespace
+
 Problem make_samples(const Grid& g, const SamplingSpec& spec, const Field& obstacle) {
   check_obstacle_on_boundary(g, obstacle);
   check_obstacle_at_nodes(g, obstacle);
   // Without an edge curve the edge kinds keep their interior samples alone.
   Problem p{g, make_sampling(g, spec.kind, spec.edge, spec.rows), {}, {}, {}, {}, spec};
-  p.phi.resize(p.sampling.size());
-  for (int i = 0; i < p.sampling.size(); ++i) {
-    const int k = i - p.sampling.edge_begin;
-    const double v = k >= 0 ? on_edge(obstacle, p.sampling.edge, k, g.h) : obstacle(p.sampling.x[i], p.sampling.y[i]);
-    check_obstacle_value(p.sampling.x[i], p.sampling.y[i], v);
-    p.phi[i] = v;
-  }
+  sample_obstacle(p, obstacle, 0);
   return p;
+}
+
+void lay_out_rim(Problem& p, const RimLayout& layout, const Field& obstacle) {
+  p.sampling = make_sampling(p.grid, p.spec.kind, p.spec.edge, p.spec.rows, layout);
+  sample_obstacle(p, obstacle, 0);
+  p.M = sampling_mass(p.grid, p.sampling);
+}
+
+void append_rim_points(Problem& p, const std::vector<double>& angles, const Field& obstacle) {
+  const int first = p.sampling.size();
+  append_rim_points(p.grid, p.spec.edge, angles, p.sampling);
+  sample_obstacle(p, obstacle, first);
+  p.M = sampling_mass(p.grid, p.sampling);
 }
 
 Problem make_problem(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load) {

@@ -2,6 +2,7 @@
 // sample points, and the assembled stiffness, mass and load. Built once, solved many times.
 #pragma once
 #include <utility>
+#include <vector>
 
 #include "assemble.hpp"
 #include "sampling.hpp"
@@ -35,6 +36,13 @@ Problem make_problem(const Grid& g, const SamplingSpec& spec, const Field& obsta
 Problem make_samples(const Grid& g, const SamplingSpec& spec, const Field& obstacle);
 // The same without an edge curve.
 Problem make_problem(const Grid& g, SamplingKind kind, const Field& obstacle, const Field& load);
+
+// The rows on p's circle laid out anew for a contact (rim_rows.hpp, D28): the sampling and the
+// obstacle at its samples remade; K and F kept; M remade.
+void lay_out_rim(Problem& p, const RimLayout& layout, const Field& obstacle);
+// Point rows appended at `angles` of p's circle (sampling.hpp's append_rim_points), the obstacle
+// read at each, M remade.
+void append_rim_points(Problem& p, const std::vector<double>& angles, const Field& obstacle);
 
 // The obstacle at a point (x, y) of its edge curve with normal (nx, ny): the largest value on the
 // curve and a hair's breadth (1e-9 h) to either side, its upper semicontinuous envelope there.

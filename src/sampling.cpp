@@ -46,7 +46,7 @@ namespace {
 Sampling gauss_points(const Grid& g) {
   const Quadrature1D q = gauss_legendre(4);
   const int per = 16, npts = g.elements() * per;
-  Sampling s{SamplingKind::Gauss, {}, {}, VectorXd(npts), RowSpMat(npts, g.unknowns()), 0, {}, 0};
+  Sampling s{SamplingKind::Gauss, {}, {}, VectorXd(npts), RowSpMat(npts, g.unknowns()), 0, {}, 0, 0, {}, {}};
   s.x.reserve(npts);
   s.y.reserve(npts);
   s.S.reserve(static_cast<Eigen::Index>(npts) * 16);
@@ -77,7 +77,7 @@ Sampling gauss_points(const Grid& g) {
 // On a mirror line a node stands for itself and its image: half its area is this grid's.
 Sampling grid_nodes(const Grid& g) {
   const int npts = g.interior_nodes();
-  Sampling s{SamplingKind::Nodes, {}, {}, VectorXd(npts), RowSpMat(npts, g.unknowns()), 0, {}, 0};
+  Sampling s{SamplingKind::Nodes, {}, {}, VectorXd(npts), RowSpMat(npts, g.unknowns()), 0, {}, 0, 0, {}, {}};
   s.S.reserve(npts);
   for (int j = 1; j <= g.ny; ++j)
     for (int i = 1; i <= g.nx; ++i) {
@@ -142,7 +142,8 @@ void add_point_row(const Grid& g, double x, double y, double scale, std::map<int
 // like h^(12/7), when H = h^(3/7) r^(4/7), the spacing we take (r the radius: no constant is fitted).
 // The integral is taken by 4 Gauss points on pieces about a cell long between the spline's breaks;
 // phi_j is the obstacle at theta_j (on the paper's scene, the rim's height).
-EdgePoints spline_rows(const Grid& g, const EdgeCurve& c, const EdgeRows& how, std::vector<std::map<int, double>>& rows) {
+EdgePoints spline_rows(const Grid& g, const EdgeCurve& c, const EdgeRows& how, std::vector<std::map<int, double>>& rows,
+                       std::vector<RimRow>& kinds) {
   const int M = spline_knots(c.r, g.h, how), degree = how.degree;
   const double delta = 2 * M_PI / M, half = 0.5 * (degree + 1);
   const int pieces = std::max(1, static_cast<int>(std::ceil(c.r * delta / g.h)));  // per knot spacing
@@ -156,6 +157,7 @@ EdgePoints spline_rows(const Grid& g, const EdgeCurve& c, const EdgeRows& how, s
     e.x.push_back(c.cx + c.r * cj), e.y.push_back(c.cy + c.r * sj);
     e.nx.push_back(-cj), e.ny.push_back(-sj);
     e.weight.push_back(c.r * delta);
+    kinds.push_back({-2, j});
     for (int span = 0; span < degree + 1; ++span)  // unit spans of the support, from -half
       for (int k = 0; k < pieces; ++k)
         for (size_t i = 0; i < q.points.size(); ++i) {
@@ -168,6 +170,66 @@ EdgePoints spline_rows(const Grid& g, const EdgeCurve& c, const EdgeRows& how, s
 }
 // @end edge-splines
 
+// @region rim-layout-rows
+// Eq. (D28): the rows of a layout made for the contact. On each spline arc the constraint averaged
+// against its clamped B-splines B_j, (S w)_j = (1 / Delta_j) int B_j(theta) w_h(x(theta)) dtheta with
+// Delta_j = int B_j, weight r Delta_j, placed at the basis' Greville angle; elsewhere a row at each
+// point, weighted by the arc it stands for.
+EdgePoints laid_out_rows(const Grid& g, const EdgeCurve& c, const EdgeRows& how, const RimLayout& L,
+                         std::vector<std::map<int, double>>& rows, std::vector<RimRow>& kinds) {
+  const int degree = how.degree;
+  const Quadrature1D q = gauss_legendre(4);
+  EdgePoints e;
+  e.length = 2 * M_PI * c.r;
+  auto place = [&](double t, double weight) {
+    e.theta.push_back(t);
+    e.x.push_back(c.cx + c.r * std::cos(t)), e.y.push_back(c.cy + c.r * std::sin(t));
+    e.nx.push_back(-std::cos(t)), e.ny.push_back(-std::sin(t));
+    e.weight.push_back(weight);
+  };
+  for (size_t a = 0; a < L.arcs.size(); ++a) {
+    const SplineArc& arc = L.arcs[a];
+    for (int j = 0; j < arc.basis_count(degree); ++j) {
+      const double delta = clamped_bspline_integral(arc, degree, j);
+      place(arc.greville(j, degree), c.r * delta);
+      kinds.push_back({static_cast<int>(a), j});
+      rows.emplace_back();
+      for (int span = j; span <= j + degree; ++span) {
+        const double lo = arc.knot(span, degree), hi = arc.knot(span + 1, degree);
+        // About a cell each; the same count for a span and its mirror image, which may differ by rounding.
+        const int pieces = std::max(1, static_cast<int>(std::ceil(c.r * (hi - lo) / g.h - 1e-9)));
+        for (int k = 0; hi > lo && k < pieces; ++k)
+          for (size_t i = 0; i < q.points.size(); ++i) {
+            const double t = lo + (hi - lo) * (k + q.points[i]) / pieces;
+            add_point_row(g, c.cx + c.r * std::cos(t), c.cy + c.r * std::sin(t),
+                          clamped_bspline(arc, degree, j, t) * (hi - lo) * q.weights[i] / pieces / delta, rows.back());
+          }
+      }
+    }
+  }
+  const std::vector<double> weights = point_weights(L, c.r);
+  for (size_t k = 0; k < L.points.size(); ++k) {
+    place(L.points[k], weights[k]);
+    kinds.push_back({-1, static_cast<int>(k)});
+    rows.emplace_back();
+    add_point_row(g, e.x.back(), e.y.back(), 1.0, rows.back());
+  }
+  return e;
+}
+// @end rim-layout-rows
+
+// Whether a point of the whole plate lies in the grid's part, and the share of its weight the part
+// keeps: half on a mirror line, where it stands for itself alone.
+bool in_part(const Grid& g, double& x, double& y, double& share) {
+  const double on_line = 1e-9 * g.h;
+  share = 1;
+  if (g.mirror_x && x > g.lx() + on_line) return false;
+  if (g.mirror_y && y > g.ly() + on_line) return false;
+  if (g.mirror_x && std::abs(x - g.lx()) <= on_line) x = g.lx(), share *= 0.5;
+  if (g.mirror_y && std::abs(y - g.ly()) <= on_line) y = g.ly(), share *= 0.5;
+  return true;
+}
+
 // @region edge-sampling
 // Keeps the interior rows farther than 1e-9 h from the curve (a node on the circle would repeat an
 // edge point) and appends one row per edge point: the values of the element's 16 basis functions
@@ -175,11 +237,16 @@ EdgePoints spline_rows(const Grid& g, const EdgeCurve& c, const EdgeRows& how, s
 // (w_h is C^1). On the part of a symmetric plate only the points of the part are kept (those of
 // the whole curve, so the part and the whole plate solve one discrete problem), and a point on a
 // mirror line, which stands for itself alone, keeps half its weight.
-void add_edge(const Grid& g, const EdgeCurve& curve, const EdgeRows& how, Sampling& s) {
+void add_edge(const Grid& g, const EdgeCurve& curve, const EdgeRows& how, const RimLayout& layout, Sampling& s) {
   std::vector<std::map<int, double>> rows;
+  std::vector<RimRow> kinds;
   EdgePoints whole;
-  if (how.splines_on(curve)) {  // make_sampling has checked that the curve is a circle
-    whole = spline_rows(g, curve, how, rows);
+  if (how.splines_on(curve) && !layout.periodic) {
+    whole = laid_out_rows(g, curve, how, layout, rows, kinds);
+    s.edge_spline_degree = how.degree;
+    s.rim = layout;
+  } else if (how.splines_on(curve)) {  // make_sampling has checked that the curve is a circle
+    whole = spline_rows(g, curve, how, rows, kinds);
     s.edge_spline_degree = how.degree;
     s.edge_knots = whole.size();
   } else {
@@ -187,16 +254,13 @@ void add_edge(const Grid& g, const EdgeCurve& curve, const EdgeRows& how, Sampli
     rows.resize(whole.size());
     for (int k = 0; k < whole.size(); ++k) add_point_row(g, whole.x[k], whole.y[k], 1.0, rows[k]);
   }
-  const double on_line = 1e-9 * g.h;
   EdgePoints e;
   std::vector<int> kept;
   for (int k = 0; k < whole.size(); ++k) {
     double x = whole.x[k], y = whole.y[k], share = 1;
-    if (g.mirror_x && x > g.lx() + on_line) continue;
-    if (g.mirror_y && y > g.ly() + on_line) continue;
-    if (g.mirror_x && std::abs(x - g.lx()) <= on_line) x = g.lx(), share *= 0.5;
-    if (g.mirror_y && std::abs(y - g.ly()) <= on_line) y = g.ly(), share *= 0.5;
+    if (!in_part(g, x, y, share)) continue;
     kept.push_back(k);
+    if (!kinds.empty()) s.rim_rows.push_back(kinds[k]);
     e.x.push_back(x), e.y.push_back(y);
     e.nx.push_back(whole.nx[k]), e.ny.push_back(whole.ny[k]);
     if (!whole.theta.empty()) e.theta.push_back(whole.theta[k]);
@@ -230,7 +294,7 @@ int spline_knots(double r, double h, const EdgeRows& how) {
   return std::max(8, 4 * static_cast<int>(std::lround(2 * M_PI * r / spacing / 4)));
 }
 
-Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge, const EdgeRows& how) {
+Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge, const EdgeRows& how, const RimLayout& layout) {
   if (how.kind == EdgeRows::Kind::Splines) {
     if (how.degree < 1 || how.degree > 5) throw std::invalid_argument("--edge-rows: the spline degree must be 1 ... 5");
     if (!(how.cells >= 0 && std::isfinite(how.cells)))
@@ -241,10 +305,79 @@ Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge, 
   const bool gauss = kind == SamplingKind::Gauss || kind == SamplingKind::EdgeGauss;
   Sampling s = gauss ? gauss_points(g) : grid_nodes(g);
   s.kind = kind;
-  if (has_edge(kind) && !edge.empty()) add_edge(g, edge, how, s);
+  if (!layout.periodic && !(how.splines_on(edge) && edge.kind == EdgeCurve::Kind::Circle && has_edge(kind)))
+    throw std::invalid_argument("make_sampling: a rim layout needs spline rows on a circle");
+  if (has_edge(kind) && !edge.empty()) add_edge(g, edge, how, layout, s);
   s.edge_begin = s.size() - s.edge.size();
   return s;
 }
+
+std::vector<double> mirror_angles(const Grid& g, double theta) {
+  std::vector<double> a{theta};
+  if (g.mirror_x) a.push_back(M_PI - theta);
+  if (g.mirror_y) a.push_back(-theta);
+  if (g.mirror_x && g.mirror_y) a.push_back(M_PI + theta);
+  for (double& t : a) t = std::fmod(std::fmod(t, 2 * M_PI) + 2 * M_PI, 2 * M_PI);
+  // An angle on a mirror line is its own image: keep it once.
+  std::vector<double> distinct;
+  for (double t : a) {
+    bool seen = false;
+    for (double u : distinct) seen = seen || std::abs(std::remainder(t - u, 2 * M_PI)) <= 1e-12;
+    if (!seen) distinct.push_back(t);
+  }
+  return distinct;
+}
+
+// @region rim-exchange-rows
+void append_rim_points(const Grid& g, const EdgeCurve& c, const std::vector<double>& angles, Sampling& s) {
+  if (!s.rim_laid_out()) throw std::logic_error("append_rim_points: the sampling has no rim layout");
+  const int old = s.size();
+  std::vector<std::pair<int, std::map<int, double>>> fresh;  // layout index, row
+  std::vector<double> shares;
+  for (double theta : angles) {
+    double x = c.cx + c.r * std::cos(theta), y = c.cy + c.r * std::sin(theta), share = 1;
+    const int index = static_cast<int>(s.rim.points.size());
+    for (double t : mirror_angles(g, theta)) s.rim.points.push_back(t);
+    if (!in_part(g, x, y, share)) continue;
+    std::map<int, double> row;
+    add_point_row(g, x, y, 1.0, row);
+    fresh.emplace_back(index, std::move(row));
+    shares.push_back(share);
+    s.x.push_back(x), s.y.push_back(y);
+    s.edge.x.push_back(x), s.edge.y.push_back(y), s.edge.theta.push_back(theta);
+    s.edge.nx.push_back(-std::cos(theta)), s.edge.ny.push_back(-std::sin(theta));
+    s.edge.weight.push_back(0);  // set below
+    s.rim_rows.push_back({-1, index});
+  }
+  RowSpMat S(old + static_cast<Eigen::Index>(fresh.size()), s.S.cols());
+  S.reserve(s.S.nonZeros() + 16 * static_cast<Eigen::Index>(fresh.size()));
+  for (int r = 0; r < old; ++r) {
+    S.startVec(r);
+    for (RowSpMat::InnerIterator it(s.S, r); it; ++it) S.insertBack(r, it.col()) = it.value();
+  }
+  for (size_t k = 0; k < fresh.size(); ++k) {
+    S.startVec(old + static_cast<int>(k));
+    for (const auto& [col, val] : fresh[k].second) S.insertBack(old + static_cast<int>(k), col) = val;
+  }
+  S.finalize();
+  s.S = std::move(S);
+  // Every point row's weight from the new layout: a new point shortens its neighbours' arcs.
+  const std::vector<double> w = point_weights(s.rim, c.r);
+  s.weights.conservativeResize(s.size());
+  double length = 0;
+  for (int k = 0; k < s.edge_size(); ++k) {
+    const RimRow& row = s.rim_rows[k];
+    if (row.point()) {
+      double x = s.edge.x[k], y = s.edge.y[k], share = 1;
+      in_part(g, x, y, share);
+      s.edge.weight[k] = share * w[row.basis];
+      s.weights[s.edge_begin + k] = s.edge.weight[k];
+    }
+    length += s.edge.weight[k];
+  }
+  s.edge.length = length;
+}
+// @end rim-exchange-rows
 
 SpMat weighted_gram(const RowSpMat& S, const VectorXd& d, int unknowns) {
   std::vector<Eigen::Triplet<double>> t;

@@ -7,13 +7,15 @@
 
 #include "edge.hpp"
 #include "grid.hpp"
+#include "rim_rows.hpp"
 #include "sparse.hpp"
 
 namespace plate {
 
 // How the edge rows constrain the plate: at points about a cell apart, or averaged against
-// B-splines of the angle (circles only, D12). Auto, the default, is splines on a circle and points
-// on a polygon.
+// B-splines of the angle (circles only, D12). Auto, the default, is splines on a circle where the
+// plate touches the whole rim, laid out by the contact where it does not (rim_rows.hpp, D28), and
+// points on a polygon.
 struct EdgeRows {
   enum class Kind { Auto, Points, Splines };
   Kind kind = Kind::Auto;
@@ -50,7 +52,10 @@ struct Sampling {
   int edge_begin = 0;
   EdgePoints edge;           // the edge rows' points, normals and angles
   int edge_spline_degree = 0;  // > 0: the edge rows are B-spline averages, their points the knots
-  int edge_knots = 0;          // splines: knots on the whole circle (the part may hold fewer)
+  int edge_knots = 0;          // periodic splines: knots on the whole circle (the part may hold fewer)
+  RimLayout rim;               // the layout of a circle's rows (periodic unless made for a contact)
+  std::vector<RimRow> rim_rows;  // with a layout that is not periodic: each edge row's place in it
+  bool rim_laid_out() const { return edge_spline_degree > 0 && !rim.periodic; }
   int size() const { return static_cast<int>(x.size()); }
   int edge_size() const { return size() - edge_begin; }
   // Whether every row is a bound on one nodal value (row q on interior node q).
@@ -61,7 +66,17 @@ struct Sampling {
 // on it (a node on the circle would repeat an edge point, or stand for the line as an area).
 // On a circle with spline rows (rows.splines_on) each edge row is the constraint averaged against a
 // B-spline of the angle; otherwise one row per point, about a cell apart.
-Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge = {}, const EdgeRows& rows = {});
+// `layout` (a circle with spline rows only) places the rows for a contact instead of periodically.
+Sampling make_sampling(const Grid& g, SamplingKind kind, const EdgeCurve& edge = {}, const EdgeRows& rows = {},
+                       const RimLayout& layout = {});
+// Appends a point row at each angle of `angles` on the circle `c` (those in the grid's part of the
+// plate; a point on a mirror line stands for itself alone, with half its weight), adds the angles
+// and their mirror images to s.rim.points, and gives every point row the weight point_weights says.
+// The new rows are the last ones; the rows before them keep their order and values.
+void append_rim_points(const Grid& g, const EdgeCurve& c, const std::vector<double>& angles, Sampling& s);
+// The images of an angle on a circle about the centre of a part's mirror lines: itself, and
+// pi - theta, -theta, pi + theta as the grid's mirrors allow.
+std::vector<double> mirror_angles(const Grid& g, double theta);
 const char* to_string(SamplingKind kind);
 // The sampling named by to_string; throws std::invalid_argument naming --sampling otherwise.
 SamplingKind sampling_kind(const std::string& name);

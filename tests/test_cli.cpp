@@ -188,38 +188,34 @@ TEST(Cli, DefaultsGiveACertifiedAnswer) {
     }
 }
 
-// An output named through a symlink lands in its target, which keeps its permissions and stays the
-// one file; a device is written to, never replaced by a regular file.
-TEST(Cli, OutputsKeepSymlinksPermissionsAndDevices) {
+// Outputs are written whole (a temporary file renamed over the path), so a path that is not a
+// regular file or a new one is refused by name before any solve: a symbolic link (the rename would
+// replace it), a device, a FIFO. An existing file keeps its permissions when it is replaced.
+TEST(Cli, OutputsAreRegularFilesAndKeepTheirPermissions) {
   namespace fs = std::filesystem;
-  const fs::path target = temp_path("link_target.json"), link = temp_path("link.json");
-  fs::remove(target);
-  fs::remove(link);
+  const fs::path target = temp_path("link_target.json"), link = temp_path("link.json"), fifo = temp_path("fifo.csv");
+  for (const auto& p : {target, link, fifo}) fs::remove(p);
   { std::ofstream(target) << "old"; }
   fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write);
   fs::create_symlink(target, link);
-  ASSERT_EQ(run_plate("-q -n 4 --json " + link.string()).status, 0);
-  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
+  const PlateRun through_link = run_plate("-q -n 4 --json " + link.string());
+  EXPECT_EQ(through_link.status, 2);
+  EXPECT_NE(through_link.output.find("--json '" + link.string() + "': a symbolic link"), std::string::npos) << through_link.output;
+  std::ifstream untouched(target);
+  std::string old;
+  untouched >> old;
+  EXPECT_EQ(old, "old");
+  ASSERT_EQ(run_plate("-q -n 4 --json " + target.string()).status, 0);
   EXPECT_EQ(read_json(target.string()).value("converged", false), true);
   EXPECT_EQ(fs::status(target).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
-  fs::remove(link);
-  fs::remove(target);
-  ASSERT_EQ(run_plate("-q -n 4 --csv /dev/null").status, 0);
-  EXPECT_TRUE(fs::is_character_file("/dev/null"));
-  // A FIFO is written directly (nothing partial to protect) and stays a FIFO; a reader gets it all.
-  const fs::path fifo = temp_path("fifo.csv"), got = temp_path("fifo_read.csv");
-  fs::remove(fifo);
-  fs::remove(got);
+  const PlateRun device = run_plate("-q -n 4 --csv /dev/null");
+  EXPECT_EQ(device.status, 2);
+  EXPECT_NE(device.output.find("--csv '/dev/null': a device"), std::string::npos) << device.output;
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
-  const PlateRun r = run_plate("-q -n 4 --csv " + fifo.string() + " & pid=$!; cat " + fifo.string() + " > " + got.string() + "; wait $pid");
-  EXPECT_EQ(r.status, 0) << r.output;
+  const PlateRun to_fifo = run_plate("-q -n 4 --line-csv " + fifo.string());
+  EXPECT_EQ(to_fifo.status, 2) << to_fifo.output;
   EXPECT_TRUE(fs::is_fifo(fs::symlink_status(fifo)));
-  std::ifstream csv(got);
-  std::stringstream rows;
-  rows << csv.rdbuf();
-  EXPECT_NE(rows.str().find("x,y,w"), std::string::npos) << rows.str().substr(0, 200);
-  fs::remove(fifo);
-  fs::remove(got);
+  for (const auto& p : {target, link, fifo}) fs::remove(p);
 }
 
 namespace {

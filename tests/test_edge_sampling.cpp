@@ -30,12 +30,13 @@ Problem edge_problem(int n, double R = NAN, SamplingKind kind = SamplingKind::Ed
   return make_problem(make_grid(n), SamplingSpec{kind, s.rim()}, s.obstacle(std::isnan(R) ? s.height : R), kNoLoad);
 }
 
-ExactResult certified(const Problem& p) {
+ExactResult certified(Problem& p) {
   ExactResult r = solve_exact(p, paper_scene().obstacle(p.phi.maxCoeff()), kNoLoad, ExactOptions{});
   EXPECT_TRUE(r.converged) << r.message;
   EXPECT_LE(r.certificate.worst(), 1e-10);
   return r;
 }
+ExactResult certified(Problem&& p) { return certified(p); }
 }  // namespace
 
 TEST(DualQP, MatchesBruteForceOverEveryActiveSetWithDependentRows) {
@@ -137,7 +138,7 @@ TEST(EdgeSampling, DualSolverAgreesWithTheNodalSolverOnNodes) {
 }
 
 TEST(EdgeSampling, PenaltySchemeApproachesTheExactAnswerLinearlyInEps) {
-  const Problem p = edge_problem(16);
+  Problem p = edge_problem(16);
   const ExactResult exact = certified(p);
   std::vector<double> d;
   for (double eps : {1e-6, 1e-7, 1e-8}) {
@@ -157,7 +158,7 @@ TEST(EdgeSampling, SymmetricUnderTheSquareAndHomogeneousInR) {
 }
 
 TEST(EdgeSampling, LineLoadIsPositiveAllRoundWithTheSquaresSymmetry) {
-  const Problem p = edge_problem(64);
+  Problem p = edge_problem(64);
   const ExactResult r = certified(p);
   const LineForce f = line_force(p, r.lambda);
   const int M = static_cast<int>(f.q.size());
@@ -176,7 +177,7 @@ TEST(EdgeSampling, LineLoadIsPositiveAllRoundWithTheSquaresSymmetry) {
 // Nodal sampling does not sample the rim; its force, binned by angle, must still carry the whole
 // push, as a force per unit length of the circle, and keep the square's symmetries.
 TEST(EdgeSampling, BinnedLineLoadOfNodalSamplingKeepsTheForceAndTheSymmetry) {
-  const Problem p = paper_problem(64, SamplingKind::Nodes);
+  Problem p = paper_problem(64, SamplingKind::Nodes);
   const ExactResult r = certified(p);
   const int bins = kRimBins;
   const LineForce f = binned_line_force(p, r.lambda, paper_scene().rim(), bins);

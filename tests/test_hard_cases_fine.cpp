@@ -43,7 +43,7 @@ TEST(FineGrid, LinearSchemeContractsAtTheRateOfTheFirstEigenvalue) {
 }
 
 TEST(FineGrid, ExactSolverCertifiesAMillionUnknowns) {
-  const Problem p = paper_problem(kFine, SamplingKind::Nodes);
+  Problem p = paper_problem(kFine, SamplingKind::Nodes);
   const ExactResult exact =  // grid-sequenced from n = 8, as `plate --scheme exact` runs it
       solve_exact(p, paper_scene().obstacle(), [](double, double) { return 0.0; }, ExactOptions{});
   ASSERT_TRUE(exact.converged) << exact.message;
@@ -56,7 +56,7 @@ TEST(FineGrid, ExactSolverCertifiesAMillionUnknowns) {
 TEST(FineGrid, NonlinearSchemeAgreesWithTheExactSolver) {
   // (3a) refactorises whenever its active set changes: on the quarter of n = 512 a few seconds a time.
   const int n = kFine;
-  const Problem p = paper_quarter(n);
+  Problem p = paper_quarter(n);
   const ExactResult exact =
       solve_exact(p, paper_scene().obstacle(), [](double, double) { return 0.0; }, ExactOptions{});
   ASSERT_TRUE(exact.converged) << exact.message;

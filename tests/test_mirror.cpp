@@ -33,15 +33,34 @@ Both solve_both(const Grid& g, const SamplingSpec& spec, const Field& phi, const
   return b;
 }
 
+// The part's force densities in the order of the whole plate's samples, matched by position: rows
+// that follow the contact are appended in the order a solve finds them, which differs between the two.
+VectorXd in_whole_order(const Both& b) {
+  const Sampling &s1 = b.whole.whole().sampling, &s2 = b.part.whole().sampling;
+  VectorXd l(s1.size());
+  for (int i = 0; i < s1.size(); ++i) {
+    int found = -1;
+    for (int k = 0; k < s2.size() && found < 0; ++k)
+      if (std::abs(s1.x[i] - s2.x[k]) <= 1e-9 && std::abs(s1.y[i] - s2.y[k]) <= 1e-9) found = k;
+    EXPECT_GE(found, 0) << "no sample of the part at (" << s1.x[i] << ", " << s1.y[i] << ")";
+    l[i] = found >= 0 ? b.part.result.lambda[found] : NAN;
+  }
+  return l;
+}
+
 // The largest differences of w, the force densities and the total force, each relative to its size.
-void expect_same(const Both& b, double tol) {
-  const VectorXd &w1 = b.whole.result.w, &w2 = b.part.result.w, &l1 = b.whole.result.lambda, &l2 = b.part.result.lambda;
+// `tol_force` for the forces: rows that follow the contact add points an eighth of a point spacing
+// apart where the plate dips, nearly dependent rows whose multipliers the answer w fixes only to the
+// conditioning of their Gram matrix (their sum too: the constant is not a clamped plate's).
+void expect_same(const Both& b, double tol, double tol_force) {
+  const VectorXd &w1 = b.whole.result.w, &w2 = b.part.result.w, &l1 = b.whole.result.lambda;
   ASSERT_EQ(w1.size(), w2.size());
-  ASSERT_EQ(l1.size(), l2.size());
+  ASSERT_EQ(l1.size(), b.part.result.lambda.size());
+  const VectorXd l2 = in_whole_order(b);
   EXPECT_LE((w1 - w2).lpNorm<Eigen::Infinity>(), tol * w1.lpNorm<Eigen::Infinity>());
-  EXPECT_LE((l1 - l2).lpNorm<Eigen::Infinity>(), tol * l1.lpNorm<Eigen::Infinity>());
-  const double f1 = total_contact_force(b.whole.whole(), l1), f2 = total_contact_force(b.part.whole(), l2);
-  EXPECT_NEAR(f1, f2, tol * std::abs(f1));
+  EXPECT_LE((l1 - l2).lpNorm<Eigen::Infinity>(), tol_force * l1.lpNorm<Eigen::Infinity>());
+  const double f1 = total_contact_force(b.whole.whole(), l1), f2 = total_contact_force(b.part.whole(), b.part.result.lambda);
+  EXPECT_NEAR(f1, f2, tol_force * std::abs(f1));
 }
 }  // namespace
 
@@ -54,7 +73,7 @@ TEST(Mirror, QuarterAndWholePlateGiveOneAnswerOnThePapersScene) {
     const Both b = solve_both(make_grid(64), spec, s.obstacle(), kNoLoad);
     EXPECT_TRUE(b.part.mirrors.x && b.part.mirrors.y) << describe(b.part.mirrors);
     EXPECT_EQ(b.part.solved.grid.unknowns(), 4 * 32 * 32);
-    expect_same(b, 1e-10);
+    expect_same(b, 1e-10, 1e-10);
     // Whole-plate quantities: the line load all round, by the square's symmetry.
     if (spec.kind == SamplingKind::Edge) {
       const LineForce q1 = line_force(b.whole.whole(), b.whole.result.lambda), q2 = line_force(b.part.whole(), b.part.result.lambda);
@@ -70,7 +89,11 @@ TEST(Mirror, RectangleWithACentredCylinderIsSolvedOnAQuarter) {
   const Field phi = cylinder(0.75, 0.5, 0.3, 0.05);
   const Both b = solve_both(g, SamplingSpec{SamplingKind::Edge, circle_edge(0.75, 0.5, 0.3)}, phi, kNoLoad);
   EXPECT_TRUE(b.part.mirrors.x && b.part.mirrors.y);
-  expect_same(b, 1e-10);
+  // The plate lifts off part of the rim here: rows laid out for the contact (D28), the same layout on
+  // the quarter and on the whole plate.
+  EXPECT_FALSE(b.part.whole().sampling.rim.periodic);
+  EXPECT_EQ(b.part.whole().sampling.size(), b.whole.whole().sampling.size());
+  expect_same(b, 1e-10, 1e-8);
 }
 
 // An expression obstacle and load, symmetric in both lines, with nodal sampling (the primal-dual
@@ -81,7 +104,7 @@ TEST(Mirror, SymmetricExpressionObstacleIsSolvedOnAQuarter) {
   for (SamplingKind kind : {SamplingKind::Nodes, SamplingKind::Gauss}) {
     const Both b = solve_both(make_grid(16), SamplingSpec{kind}, phi, load);
     EXPECT_TRUE(b.part.mirrors.x && b.part.mirrors.y) << to_string(kind);
-    expect_same(b, 1e-11);
+    expect_same(b, 1e-11, 1e-11);
   }
 }
 
@@ -92,7 +115,7 @@ TEST(Mirror, APartialSymmetryGivesAHalfAndNoneTheWholePlate) {
   EXPECT_FALSE(b.part.mirrors.x);
   EXPECT_TRUE(b.part.mirrors.y);
   EXPECT_EQ(b.part.solved.grid.unknowns(), 4 * 31 * 16);
-  expect_same(b, 1e-10);
+  expect_same(b, 1e-10, 1e-10);
   const Field phi_off = cylinder(0.4, 0.55, 0.25, 0.0625);
   const SceneSolution off = solve_exact_scene(make_grid(32), SamplingSpec{SamplingKind::Edge, circle_edge(0.4, 0.55, 0.25)}, phi_off, kNoLoad,
                                               ExactOptions{});

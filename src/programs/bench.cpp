@@ -53,7 +53,7 @@ std::map<std::string, double> run_job(const Job& job, const Field& obstacle, std
   const Field no_load = [](double, double) { return 0.0; };
   std::map<std::string, double> v;
   const auto t0 = Clock::now();
-  const Problem p = make_problem(make_grid(job.n), SamplingKind::Nodes, obstacle, no_load);
+  Problem p = make_problem(make_grid(job.n), SamplingKind::Nodes, obstacle, no_load);
   v["assemble_s"] = seconds_since(t0);
   v["unknowns"] = p.grid.unknowns();
   VectorXd w;

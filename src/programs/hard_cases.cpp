@@ -182,7 +182,7 @@ void flat_support(std::ostream& md, const Context& c) {
   int previous = 0;
   for (int n : {32, 64, 128, 256}) {
     const Grid g = make_grid(n);
-    const Problem p = make_problem(g, SamplingKind::Nodes, uniform(-5e-4), uniform(-1));
+    Problem p = make_problem(g, SamplingKind::Nodes, uniform(-5e-4), uniform(-1));
     std::cerr << "hard_cases: flat support, n = " << n << "\n";
     auto t0 = Clock::now();
     const ExactResult r = solve_exact(p, uniform(-5e-4), uniform(-1), ExactOptions{});
@@ -260,7 +260,7 @@ void million_unknowns(std::ostream& md, const Context& c) {
      << " unknowns; the same discrete problem, mirror.hpp).\n\n"
         "| solver | settings | certified | iterations | factorisations | error bound or certificate | "
         "vs exact |\n|---|---|:---:|---:|---:|---:|---:|\n";
-  const Problem p = make_problem(quarter, SamplingKind::Nodes, c.scene.obstacle(), uniform(0));
+  Problem p = make_problem(quarter, SamplingKind::Nodes, c.scene.obstacle(), uniform(0));
   std::cerr << "hard_cases: n = " << c.fine << ", exact\n";
   const auto t0 = Clock::now();
   const ExactResult exact = solve_exact(p, c.scene.obstacle(), uniform(0), ExactOptions{});

@@ -17,6 +17,9 @@
 #include "exit_codes.hpp"
 #include "contraction.hpp"
 #include "dual_active_set.hpp"
+#include "error_bar.hpp"
+#include "mirror.hpp"
+#include "extrema.hpp"
 #include "fields.hpp"
 #include "format.hpp"
 #include "norms.hpp"
@@ -67,29 +70,37 @@ std::pair<double, double> parse_pair(const std::string& option, const std::strin
   return {x, y};
 }
 
-// Refuses grids with nothing to solve and grids that cannot fit (make_grid already refuses counts
-// beyond an int): the memory estimate is the exact solver's measured peak per unknown (results/speed_vs_error.md:
-// about 3.5 KiB at n = 1024) against this machine's physical memory.
+// Refuses grids with nothing to solve.
 void check_grid_size(const plate::Grid& g) {
-  const long long nodes = static_cast<long long>(g.nx - 1) * (g.ny - 1), unknowns = 4 * nodes;
+  const long long nodes = static_cast<long long>(g.nx - 1) * (g.ny - 1);
   if (nodes <= 0)
     throw std::invalid_argument("--cells: the grid " + std::to_string(g.nx) + " x " + std::to_string(g.ny) +
                                 " has no interior node, so the clamped plate is w = 0 and there is nothing to solve "
                                 "(use at least 2 cells across each side)");
+}
+
+// Refuses a model that cannot fit (make_grid already refuses counts beyond an int): the estimate is
+// the exact solver's measured peak per unknown (results/speed_vs_error.md: about 3.5 KiB at
+// n = 1024) times the unknowns of the grid actually solved, the part of the plate its mirror lines
+// leave, against this machine's physical memory.
+void check_memory(const plate::Grid& solved) {
+  const double unknowns = solved.unknowns();
   const double need = unknowns * 3.5 * 1024, have = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE);
   if (have > 0 && need > have)
-    throw std::invalid_argument("--cells: " + std::to_string(unknowns) + " unknowns need about " +
+    throw std::invalid_argument("--cells: the " + std::string(solved.is_part() ? "part of the plate solved" : "plate") + " has " +
+                                plate::fmt("%.0f", unknowns) + " unknowns, which need about " +
                                 plate::fmt("%.3g", need / (1 << 30)) + " GiB, more than this machine's " +
                                 plate::fmt("%.3g", have / (1 << 30)) + " GiB");
 }
 
-// Every output path is checked before the solve, so a bad one fails at once and leaves nothing.
-void check_outputs(const std::vector<std::string>& paths) {
+// Every output path given is checked before the solve (a file is created in its folder and removed),
+// so a bad one fails at once and leaves nothing.
+void check_outputs(const std::vector<std::pair<const CLI::Option*, std::string>>& outputs) {
   std::vector<std::string> targets;
-  for (const auto& p : paths) {
-    if (p.empty()) continue;
-    plate::check_writable(p);
-    const std::string t = std::filesystem::weakly_canonical(plate::output_target(p)).string();
+  for (const auto& [opt, p] : outputs) {
+    if (!opt->count()) continue;
+    plate::check_output_file(opt->get_name(), p);
+    const std::string t = std::filesystem::weakly_canonical(p).string();
     if (std::find(targets.begin(), targets.end(), t) != targets.end())
       throw std::invalid_argument("--json, --csv and --line-csv must name different files, but two name " + p);
     targets.push_back(t);
@@ -114,7 +125,7 @@ struct Options {
   int n = 4;
   double lx = 1.0, ly = 1.0;
   std::string obstacle = "cylinder", load = "0", scheme = "exact", sampling = "edge", edge = "auto", edge_rows = "auto",
-              symmetry = "auto";
+              symmetry = "auto", estimate = "auto";
   double R = 0.0625, radius = 0.25, nu = plate::kPoissonRatio;  // the paper's cylinder (a test holds these to reference/)
   std::string centre = "0.5,0.5";
   plate::SolveOptions opt;
@@ -124,7 +135,7 @@ struct Options {
   bool rate = false, quiet = false, no_globalise = false, no_nested = false;
   CLI::Option *eps_opt = nullptr, *eps_start_opt = nullptr, *eps_min_opt = nullptr, *tol_opt = nullptr,
               *max_iter_opt = nullptr, *n_opt = nullptr, *sampling_opt = nullptr, *edge_opt = nullptr, *csv_opt = nullptr,
-              *edge_rows_opt = nullptr, *symmetry_opt = nullptr;
+              *edge_rows_opt = nullptr, *symmetry_opt = nullptr, *json_opt = nullptr, *line_csv_opt = nullptr;
 };
 
 void add_options(CLI::App& app, Options& o) {
@@ -175,6 +186,12 @@ void add_options(CLI::App& app, Options& o) {
                  "the outputs are the whole plate's) or none (always the whole plate)")
       ->check(CLI::IsMember({"auto", "none"}))
       ->capture_default_str();
+  app.add_option("--estimate", o.estimate,
+                 "exact scheme: auto (an error bar on each answer's distance from the plate's own, from the grids "
+                 "n/8, n/4, n/2 that grid sequencing solves anyway: Richardson where the observed order is steady, "
+                 "else the last difference, marked NOT STEADY) or off")
+      ->check(CLI::IsMember({"auto", "off"}))
+      ->capture_default_str();
   o.eps_opt = app.add_option("--eps", o.eps_fixed, "solve at this eps only (no continuation); every eps is in units of lx^4, so it means the same in any unit of length")->check(kFinitePositive);
   o.eps_start_opt = app.add_option("--eps-start", o.opt.eps_start, "first eps of the continuation")
       ->check(kFinitePositive)
@@ -198,8 +215,8 @@ void add_options(CLI::App& app, Options& o) {
       ->capture_default_str();
   app.add_option("--point", o.points, "report w at 'x,y' (repeatable)");
   o.csv_opt = app.add_option("--csv", o.csv_path, "write the nodal fields (CSV) here");
-  app.add_option("--json", o.json_path, "write the summary (JSON) here");
-  app.add_option("--line-csv", o.line_csv_path,
+  o.json_opt = app.add_option("--json", o.json_path, "write the summary (JSON) here");
+  o.line_csv_opt = app.add_option("--line-csv", o.line_csv_path,
                  "write the line load q(theta) at the edge points (CSV) here; semi-analytic: at 720 fixed angles");
   app.add_flag("--no-globalise", o.no_globalise,
                "exact scheme: end with an error if the active set repeats, instead of the monotone fallback");
@@ -216,8 +233,18 @@ struct Run {
   bool exact = false;
   plate::SolveOptions opt;
   plate::ExactOptions exact_opt;
+  double nu = plate::kPoissonRatio;
   bool use_mirrors = true;
+  bool estimate = true;
   plate::Report report;
+};
+
+// The answer's values on one grid of the sequence, for the error bars.
+struct LevelAnswer {
+  int cells = 0;
+  bool certified = false;
+  double max_w = 0, min_w = 0, force = 0, m12 = 0;
+  std::vector<double> at_points;
 };
 
 // "auto", "points", "spline" or "spline:DEGREE[,CELLS]"; throws std::invalid_argument naming
@@ -247,10 +274,14 @@ Run check(const Options& o) {
   Run r;
   r.g = make_grid(o.n, o.lx, o.ly);
   check_grid_size(r.g);
-  check_outputs({o.json_path, o.csv_path, o.line_csv_path});
+  check_outputs({{o.json_opt, o.json_path}, {o.csv_opt, o.csv_path}, {o.line_csv_opt, o.line_csv_path}});
   r.spec = SamplingSpec{sampling_kind(o.sampling), {}};
   if (o.obstacle == "cylinder") {
     const auto [cx, cy] = parse_pair("--centre", o.centre);
+    if (!(cx - o.radius >= 0 && cx + o.radius <= r.g.lx() && cy - o.radius >= 0 && cy + o.radius <= r.g.ly()))
+      throw std::invalid_argument("--centre and --radius: the cylinder's disk (centre (" + fmt("%g", cx) + ", " + fmt("%g", cy) +
+                                  "), radius " + fmt("%g", o.radius) + ") does not lie inside the plate [0, " +
+                                  fmt("%g", r.g.lx()) + "] x [0, " + fmt("%g", r.g.ly()) + "]");
     r.phi = cylinder(cx, cy, o.radius, o.R);
     if (o.edge == "auto") r.spec.edge = circle_edge(cx, cy, o.radius);
   } else {
@@ -273,7 +304,13 @@ Run check(const Options& o) {
   } else if (o.no_globalise || o.no_nested || o.symmetry_opt->count()) {
     throw std::invalid_argument("--no-globalise, --no-nested and --symmetry apply to --scheme exact only");
   }
+  if (!r.exact && o.estimate != "auto")
+    throw std::invalid_argument("--estimate applies to --scheme exact only (the penalty schemes' error bound is their own)");
   r.use_mirrors = o.symmetry == "auto";
+  // The memory the model solved needs: the part the mirrors leave, for the exact scheme.
+  check_memory(r.exact && r.use_mirrors ? part_of(r.g, find_mirrors(r.g, r.spec, r.phi, r.f)) : r.g);
+  r.nu = o.nu;
+  r.estimate = o.estimate == "auto";
   r.exact_opt.tol = o.tol_opt->count() ? o.opt.tol : r.exact_opt.tol;
   r.exact_opt.max_iter = o.max_iter_opt->count() ? o.opt.max_iter : r.exact_opt.max_iter;
   r.exact_opt.globalise = !o.no_globalise;
@@ -307,6 +344,54 @@ void echo(const CLI::App& app, const Options& o, Run& r) {
   for (const auto& [k, v] : r.report.config) std::cout << "  " << k << " = " << v << "\n";
 }
 
+// The values an error bar is put on, on one grid of the sequence (the part of the plate solved: w_h
+// is read on the whole plate through the mirrors, and the force of a part counts once per image).
+LevelAnswer level_answer(const plate::Problem& p, const plate::ExactResult& x, const Run& r) {
+  using namespace plate;
+  LevelAnswer a;
+  a.cells = p.grid.whole_nx();
+  a.certified = x.converged;
+  a.max_w = extremum_of_w(p.grid, x.w, +1).value;
+  a.min_w = extremum_of_w(p.grid, x.w, -1).value;
+  a.force = (1 << (int(p.grid.mirror_x) + int(p.grid.mirror_y))) * p.sampling.weights.dot(x.lambda);
+  Report scratch;
+  find_extremes(scratch, p, x.w, r.nu);
+  a.m12 = scratch.max_abs_m12.value;
+  for (const auto& [px, py] : r.report.points) a.at_points.push_back(evaluate(p.grid, x.w, px, py).w);
+  return a;
+}
+
+// Error bars from the last four grids of the sequence (or three, or two), each certified and each
+// with half the cells of the next; none, with the reason, otherwise.
+void set_error_bars(Run& r, const std::vector<LevelAnswer>& levels) {
+  using namespace plate;
+  if (!r.estimate) return;
+  std::vector<const LevelAnswer*> use;
+  for (auto it = levels.rbegin(); it != levels.rend() && use.size() < 4; ++it) {
+    if (!it->certified || (!use.empty() && 2 * it->cells != use.back()->cells)) break;
+    use.push_back(&*it);
+  }
+  std::reverse(use.begin(), use.end());
+  if (use.size() < 2) {
+    r.report.bar_note = r.exact_opt.nested ? "the grid sequence has no certified coarser grid (use n = 16, 32, ... or more)"
+                                           : "--no-nested solves no coarser grid";
+    return;
+  }
+  for (const auto* l : use) r.report.bar_grids.push_back(l->cells);
+  auto add = [&](const std::string& name, auto get) {
+    std::vector<double> v;
+    for (const auto* l : use) v.push_back(get(*l));
+    r.report.bars.emplace_back(name, error_bar(v));
+  };
+  add("max w", [](const LevelAnswer& l) { return l.max_w; });
+  add("min w", [](const LevelAnswer& l) { return l.min_w; });
+  add("total contact force", [](const LevelAnswer& l) { return l.force; });
+  add("max |m12|", [](const LevelAnswer& l) { return l.m12; });
+  for (size_t k = 0; k < r.report.points.size(); ++k)
+    add("w(" + fmt("%.10g", r.report.points[k].first) + ", " + fmt("%.10g", r.report.points[k].second) + ")",
+        [k](const LevelAnswer& l) { return l.at_points[k]; });
+}
+
 // The exact solver's answer in the penalty schemes' form, for one report: on the part of the plate
 // the scene's mirror lines leave (unless --symmetry none), unfolded onto the whole plate.
 plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::VectorXd& xi, plate::Progress& progress) {
@@ -319,7 +404,10 @@ plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::Vec
       progress.stage(grid + "active-set iteration " + std::to_string(iteration) + ", " + std::to_string(held) +
                      " rows held, " + std::to_string(changed) + " to change");
   };
+  std::vector<LevelAnswer> levels;
+  if (r.estimate) r.exact_opt.on_level = [&](const Problem& p, const ExactResult& x) { levels.push_back(level_answer(p, x, r)); };
   scene = solve_exact_scene(r.g, r.spec, r.phi, r.f, r.exact_opt, r.use_mirrors);
+  set_error_bars(r, levels);
   const ExactResult& exact = scene.result;
   SolveResult result;
   result.w = exact.w;
@@ -394,6 +482,7 @@ int solve_and_write(const Options& o, Run& r, plate::Clock::time_point t0) {
   r.report.xi = xi;
   r.report.line = line_force(problem, xi);
   r.report.dip_below_edge = dip_below_edge(problem, result.w, r.phi);
+  find_extremes(r.report, problem, result.w, o.nu);
   if (o.rate) r.report.lambda1h = smallest_eigenpair(problem.K, problem.M).lambda;
   r.report.problem = &problem;
   r.report.result = &result;
@@ -402,7 +491,14 @@ int solve_and_write(const Options& o, Run& r, plate::Clock::time_point t0) {
 
   // A run that is not an answer says so in every output, so a file read later cannot be mistaken for one.
   const std::string warning = result.converged ? "" : "# NOT CONVERGED: " + result.message + "\n";
-  if (!o.csv_path.empty()) write_file_atomically(o.csv_path, warning + nodal_csv(nodes));
+  // The CSV says what its bounds are about, as the summary does: the certificate the discrete
+  // answer, the error bars the plate's.
+  std::string bounds;
+  if (r.report.certificate)
+    bounds = "# certificate (discrete): worst relative entry " + fmt("%.2g", r.report.certificate->worst()) + "\n";
+  std::istringstream bar_lines(error_bars_text(r.report));
+  for (std::string line; std::getline(bar_lines, line);) bounds += "# " + line + "\n";
+  if (!o.csv_path.empty()) write_file_atomically(o.csv_path, warning + bounds + nodal_csv(nodes));
   if (!o.json_path.empty()) write_file_atomically(o.json_path, summary_json(r.report));
   if (!o.line_csv_path.empty()) write_file_atomically(o.line_csv_path, warning + line_force_csv(problem, r.report.line));
   if (!o.quiet) std::cout << summary_text(r.report);
@@ -423,6 +519,8 @@ int solve_semi_analytic(const CLI::App& app, const Options& o, plate::Clock::tim
       throw std::invalid_argument(opt->get_name() + " has no meaning for --scheme semi-analytic (no grid, no eps)");
   if (o.rate || o.no_globalise || o.no_nested)
     throw std::invalid_argument("--rate, --no-globalise and --no-nested have no meaning for --scheme semi-analytic");
+  if (o.estimate != "auto")
+    throw std::invalid_argument("--estimate has no meaning for --scheme semi-analytic (its bars are the series' own)");
   if (o.obstacle != "cylinder")
     throw std::invalid_argument("--obstacle: --scheme semi-analytic models the cylinder only, not '" + o.obstacle + "'");
   size_t used = 0;
@@ -436,7 +534,7 @@ int solve_semi_analytic(const CLI::App& app, const Options& o, plate::Clock::tim
   const auto [cx, cy] = parse_pair("--centre", o.centre);
   const RimScene scene{o.lx, o.ly, cx, cy, o.radius, o.R, load};
   check(scene);
-  check_outputs({o.json_path, o.line_csv_path});
+  check_outputs({{o.json_opt, o.json_path}, {o.line_csv_opt, o.line_csv_path}});
   RimReport report;
   for (const auto& p : o.points) report.points.push_back(parse_pair("--point", p));
   for (const auto& [x, y] : report.points)

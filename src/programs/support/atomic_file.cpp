@@ -13,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 
 namespace plate {
 
@@ -90,6 +91,27 @@ void check_writable(const std::string& path) {
   }
   const fs::path parent = fs::path(target).parent_path().empty() ? fs::path(".") : fs::path(target).parent_path();
   if (::access(parent.c_str(), W_OK) != 0) fail(path, std::strerror(errno));
+}
+
+void check_output_file(const std::string& option, const std::string& path) {
+  namespace fs = std::filesystem;
+  auto refuse = [&](const std::string& why) { throw std::invalid_argument(option + " '" + path + "': " + why); };
+  if (path.empty()) throw std::invalid_argument(option + ": the path is empty; name a file");
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) == 0) {
+    if (S_ISLNK(st.st_mode)) refuse("a symbolic link; name the file itself (the output replaces the path it is given)");
+    if (S_ISDIR(st.st_mode)) refuse("a directory; name a file");
+    if (!S_ISREG(st.st_mode)) refuse("a device, FIFO or socket, not a regular file; name a file (outputs are written whole)");
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);  // no O_TRUNC: the old file stays as it is
+    if (fd < 0) refuse(std::string("cannot be written: ") + std::strerror(errno));
+    ::close(fd);
+  }
+  const fs::path parent = fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
+  const std::string probe = (parent / (".plate-probe." + std::to_string(::getpid()))).string();
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0) refuse(std::string("no file can be created in its folder: ") + std::strerror(errno));
+  ::close(fd);
+  ::unlink(probe.c_str());
 }
 
 void write_file_atomically(const std::string& path, const std::string& content) {

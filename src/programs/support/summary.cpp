@@ -45,6 +45,18 @@ Extremes extremes(const NodalFields& f) {
 }
 }  // namespace
 
+void find_extremes(Report& r, const Problem& p, const VectorXd& w, double nu) {
+  r.max_w = extremum_of_w(p.grid, w, +1);
+  r.min_w = extremum_of_w(p.grid, w, -1);
+  // |m12| = (1 - nu) |w_xy|, continuous for these elements: from the best node, by the pattern.
+  const auto twist = [&](double x, double y) { return std::abs(bending_moments(0, evaluate(p.grid, w, x, y).wxy, 0, nu).m12); };
+  Extremum best{-1, 0, 0};
+  for (int j = 0; j <= p.grid.whole_ny(); ++j)
+    for (int i = 0; i <= p.grid.whole_nx(); ++i)
+      if (const double v = twist(i * p.grid.h, j * p.grid.h); v > best.value) best = {v, i * p.grid.h, j * p.grid.h};
+  r.max_abs_m12 = pattern_maximum(p.grid, twist, best.x, best.y, p.grid.h / 2);
+}
+
 std::string nodal_csv(const NodalFields& f) {
   std::ostringstream o;
   o << "# plate: nodal fields; w and derivatives (second ones averaged over the elements at the node),\n"
@@ -145,7 +157,34 @@ void check_json(Json& j, const Report& r) {
     j["residual_ok"] = s.converged;
   }
 }
+Json error_bars_json(const Report& r) {
+  Json j = {{"grids", r.bar_grids}, {"note", r.bar_note}};
+  for (const auto& [name, b] : r.bars)
+    j[name] = {{"value", number(b.value)}, {"bar", number(b.bar)}, {"basis", b.basis}, {"steady", b.steady},
+               {"order", number(b.order)}, {"limit", number(b.limit)}};
+  return j;
+}
 }  // namespace
+
+std::string error_bars_text(const Report& r) {
+  std::ostringstream o;
+  if (r.bars.empty()) {
+    if (!r.bar_note.empty()) o << "error bar (continuum): none: " << r.bar_note << "\n";
+    return o.str();
+  }
+  o << "error bars (continuum: the distance to the plate's answer, estimated from the grids n =";
+  for (size_t k = 0; k < r.bar_grids.size(); ++k) o << (k ? ", " : " ") << r.bar_grids[k];
+  o << " of this run's sequence):\n";
+  for (const auto& [name, b] : r.bars) {
+    o << "  " << name << " = " << num(b.value) << " +- " << fmt("%.2g", b.bar) << "  (";
+    if (b.basis == "richardson") o << "Richardson, order " << fmt("%.2f", b.order) << ", steady";
+    else if (b.basis == "last difference") o << "NOT STEADY: the last difference, order " << fmt("%.2f", b.order);
+    else if (b.basis != "none") o << "NOT STEADY: the values swing; the larger of the last two differences";
+    else o << "none";
+    o << ")\n";
+  }
+  return o.str();
+}
 
 std::string summary_json(const Report& r) {
   const Problem& p = *r.problem;
@@ -164,20 +203,31 @@ std::string summary_json(const Report& r) {
   j["eps_final"] = number(s.eps / r.eps_unit);
   j["total_iterations"] = s.total_iterations();
   j["levels"] = levels_json(s, r.eps_unit);
-  j["max_w"] = number(e.max_w);
-  j["max_w_at"] = {number(f.x[e.argmax_w]), number(f.y[e.argmax_w])};
-  j["max_abs_w"] = number(e.max_abs_w);
+  // Extremes of the field w_h over the plate; the nodal maximum apart, labelled as such.
+  j["max_w"] = number(r.max_w.value);
+  j["max_w_at"] = {number(r.max_w.x), number(r.max_w.y)};
+  j["min_w"] = number(r.min_w.value);
+  j["min_w_at"] = {number(r.min_w.x), number(r.min_w.y)};
+  j["max_abs_w"] = number(std::max(std::abs(r.max_w.value), std::abs(r.min_w.value)));
+  j["max_w_nodes"] = number(e.max_w);
+  j["max_w_nodes_at"] = {number(f.x[e.argmax_w]), number(f.y[e.argmax_w])};
   j["w_at_points"] = Json::array();
   for (const auto& [x, y] : r.points)
     j["w_at_points"].push_back({{"x", number(x)}, {"y", number(y)}, {"w", number(evaluate(p.grid, s.w, x, y).w)}});
   j["total_contact_force"] = number(total_contact_force(p, xi));
   j["max_xi_samples"] = number(xi.size() ? xi.maxCoeff() : 0.0);
   j["max_xi_nodes"] = number(e.max_xi);
-  j["max_abs_m12"] = number(e.max_abs_m12);
+  j["max_abs_m12"] = number(r.max_abs_m12.value);
+  j["max_abs_m12_at"] = {number(r.max_abs_m12.x), number(r.max_abs_m12.y)};
+  j["max_abs_m12_nodes"] = number(e.max_abs_m12);
   j["line_force"] = line_force_json(r.line);
   j["constraint_violation"] = number((p.phi - p.sampling.S * s.w).cwiseMax(0.0).maxCoeff());
   j["dip_below_edge"] = number(r.dip_below_edge);
   check_json(j, r);
+  // What each bound is about: the certificate, the discrete answer; the error bars, the plate's.
+  j["certificate_is"] = "discrete: the distance of this answer from the exact solution of the discrete problem";
+  j["error_bar_is"] = "continuum: the estimated distance of each value from the plate's own answer (h -> 0)";
+  j["error_bars"] = error_bars_json(r);
   j["refinement"] = numbers(r.refinement);
   j["contact_nodes"] = Json::array();
   for (int k : e.contact) j["contact_nodes"].push_back({number(f.x[k]), number(f.y[k])});
@@ -205,13 +255,15 @@ std::string summary_text(const Report& r) {
     for (const auto& l : s.levels) o << " " << num(l.eps / r.eps_unit) << ":" << l.iterations;
     o << "  total " << s.total_iterations() << "\n";
   }
-  o << "max w over the grid nodes = " << num(e.max_w) << " at (" << num(f.x[e.argmax_w]) << ", " << num(f.y[e.argmax_w])
-    << ")\n";
+  o << "max w = " << num(r.max_w.value) << " at (" << num(r.max_w.x) << ", " << num(r.max_w.y) << "), min w = "
+    << num(r.min_w.value) << " at (" << num(r.min_w.x) << ", " << num(r.min_w.y)
+    << ") (of w_h over the plate; the largest nodal value is " << num(e.max_w) << " at (" << num(f.x[e.argmax_w]) << ", "
+    << num(f.y[e.argmax_w]) << "))\n";
   for (const auto& [x, y] : r.points)
     o << "w(" << num(x) << ", " << num(y) << ") = " << num(evaluate(r.problem->grid, s.w, x, y).w) << "\n";
   o << "total contact force = " << num(total_contact_force(*r.problem, xi)) << ", max xi at nodes = "
-    << num(e.max_xi) << ", max |m12| at nodes = " << num(e.max_abs_m12) << ", contact nodes: " << e.contact.size()
-    << "\n";
+    << num(e.max_xi) << ", max |m12| = " << num(r.max_abs_m12.value) << " at (" << num(r.max_abs_m12.x) << ", "
+    << num(r.max_abs_m12.y) << ") (at the nodes " << num(e.max_abs_m12) << "), contact nodes: " << e.contact.size() << "\n";
   if (!r.line.empty()) {
     const LineForce& l = r.line;
     o << "line load on the edge (" << l.q.size() << (l.spline_degree > 0 ? " spline knots" : " points") << "): mean " << num(l.mean) << " (total " << num(l.total)
@@ -223,16 +275,17 @@ std::string summary_text(const Report& r) {
         << " (points: " << num(line_force_value(l, 0)) << ", " << num(line_force_value(l, M_PI / 4)) << ")";
     o << "\n";
     if (std::isfinite(r.dip_below_edge))
-      o << "  between the rows the plate dips at most " << num(r.dip_below_edge) << " below the edge (points h/8 apart)\n";
+      o << "  between the rows the plate dips at most " << num(r.dip_below_edge) << " below the edge (points h/32 apart)\n";
     if (!l.fourier.empty() && l.spline_degree == 0) {
       o << "  fit q(theta) ~";
       for (size_t k = 0; k < l.fourier.size(); ++k) o << (k ? " + " : " ") << num(l.fourier[k]) << (k ? " cos " + std::to_string(4 * k) + " theta" : "");
       o << "\n";
     }
   }
+  o << error_bars_text(r);
   if (r.certificate) {
     const Certificate& c = *r.certificate;
-    o << "certificate (relative): violation " << num(c.violation) << ", negative multiplier "
+    o << "certificate (discrete: the distance to the discrete answer; relative): violation " << num(c.violation) << ", negative multiplier "
       << num(c.negative_multiplier) << ", complementarity " << num(c.complementarity) << ", stationarity "
       << num(c.stationarity) << (c.worst() <= r.certificate_tol ? " (all <= " : " (NOT all <= ")
       << num(r.certificate_tol) << ")\n";

@@ -6,6 +6,8 @@
 
 #include "active_set.hpp"
 #include "contact.hpp"
+#include "error_bar.hpp"
+#include "extrema.hpp"
 #include "line_force.hpp"
 #include "schemes.hpp"
 
@@ -28,7 +30,19 @@ struct Report {
   int model_unknowns = 0;             // its unknowns; 0: the whole grid's
   std::vector<double> refinement;     // the exact solve's refinement steps, each correction's relative size
   double dip_below_edge = NAN;        // max of phi - w along the edge curve (NaN: no edge)
+  // The extremes of the finite-element fields over the plate (extrema.hpp), found by the program
+  // before it reports; the nodal ones are read off `nodes`.
+  Extremum max_w, min_w, max_abs_m12;
+  // How the rows on a circle were laid out (D28): spline arcs, point rows, those added by exchange, layouts tried.
+  int rim_arcs = -1, rim_points = 0, rim_exchanged = 0, rim_layouts = 0;
+  // Error bars on the distance to the plate's answer (error_bar.hpp), from the grids `bar_grids` of
+  // the run's sequence; empty with the reason in `bar_note` when there are none.
+  std::vector<std::pair<std::string, ErrorBar>> bars;
+  std::vector<int> bar_grids;
+  std::string bar_note;
 };
+// The extremes of w_h and of |m12| over the plate (not over the nodes), into r.
+void find_extremes(Report& r, const Problem& p, const VectorXd& w, double nu);
 
 // The angles at which --line-csv gives a spline line load (and the semi-analytic scheme its own).
 constexpr int kLineCsvAngles = 720;
@@ -36,6 +50,7 @@ constexpr int kLineCsvAngles = 720;
 std::string nodal_csv(const NodalFields& f);
 std::string line_force_csv(const Problem& p, const LineForce& f);
 std::string summary_json(const Report& r);
-std::string summary_text(const Report& r);  // the few lines printed at the end of a run
+std::string summary_text(const Report& r);
+std::string error_bars_text(const Report& r);  // the lines of summary_text that give the error bars  // the few lines printed at the end of a run
 
 }  // namespace plate

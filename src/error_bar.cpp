@@ -1,0 +1,41 @@
+// The error bar from the run's own grids.
+#include "error_bar.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "richardson.hpp"
+
+namespace plate {
+
+// @region error-bar
+// Eq. (D29): the finest value with a bar on its distance from the continuum.
+ErrorBar error_bar(const std::vector<double>& values) {
+  ErrorBar b;
+  if (values.empty()) return b;
+  b.value = b.limit = values.back();
+  b.bar = b.order = NAN;
+  b.basis = "none";
+  if (values.size() < 2) return b;
+  const Extrapolation e = extrapolate(values);
+  if (!e.orders.empty()) b.order = e.orders.back();
+  b.steady = e.steady;
+  if (e.steady) {
+    b.limit = e.limit;
+    b.bar = std::abs(b.value - e.limit) + e.bar;
+    b.basis = "richardson";
+  } else if (values.size() >= 3 && !std::isfinite(b.order)) {
+    // The increments change sign or grow: the values swing rather than settle, and the larger of the
+    // last two swings is the scale of the finest value's error.
+    const size_t m = values.size();
+    b.bar = std::max(std::abs(values[m - 1] - values[m - 2]), std::abs(values[m - 2] - values[m - 3]));
+    b.basis = "largest of the last two differences";
+  } else {
+    b.bar = std::abs(values[values.size() - 1] - values[values.size() - 2]);
+    b.basis = "last difference";
+  }
+  return b;
+}
+// @end error-bar
+
+}  // namespace plate

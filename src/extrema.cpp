@@ -1,0 +1,66 @@
+// Newton's method on grad w_h = 0, and the shrinking pattern search.
+#include "extrema.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "contact.hpp"
+
+namespace plate {
+
+Extremum pattern_maximum(const Grid& g, const std::function<double(double, double)>& f, double x0, double y0,
+                         double step) {
+  const double lx = g.whole_lx(), ly = g.whole_ly();
+  Extremum best{f(x0, y0), x0, y0};
+  for (double s = step; s > 1e-9 * std::max(lx, ly); s /= 5) {
+    const double cx = best.x, cy = best.y;
+    for (int i = -6; i <= 6; ++i)
+      for (int j = -6; j <= 6; ++j) {
+        const double x = std::clamp(cx + i * s, 0.0, lx), y = std::clamp(cy + j * s, 0.0, ly);
+        if (const double v = f(x, y); v > best.value) best = {v, x, y};
+      }
+  }
+  return best;
+}
+
+// @region newton-extremum
+Extremum extremum_of_w(const Grid& g, const VectorXd& w, double sign, int starts) {
+  const double lx = g.whole_lx(), ly = g.whole_ly();
+  auto value = [&](double x, double y) { return sign * evaluate(g, w, x, y).w; };
+  // The best nodes of the whole plate (a part's are its images too: evaluate reflects).
+  std::vector<Extremum> nodes;
+  for (int j = 0; j <= g.whole_ny(); ++j)
+    for (int i = 0; i <= g.whole_nx(); ++i) nodes.push_back({value(i * g.h, j * g.h), i * g.h, j * g.h});
+  const int k = std::min<int>(starts, static_cast<int>(nodes.size()));
+  std::partial_sort(nodes.begin(), nodes.begin() + k, nodes.end(),
+                    [](const Extremum& a, const Extremum& b) { return a.value > b.value; });
+  Extremum best = nodes[0];
+  for (int s = 0; s < k; ++s) {
+    double x = nodes[s].x, y = nodes[s].y;
+    bool settled = false;
+    for (int it = 0; it < 30 && !settled; ++it) {
+      const PointValues v = evaluate(g, w, x, y);
+      // Newton on grad(sign w) = 0: H d = -grad, H negative definite at a maximum of sign w.
+      const double gx = sign * v.wx, gy = sign * v.wy, hxx = sign * v.wxx, hxy = sign * v.wxy, hyy = sign * v.wyy;
+      const double det = hxx * hyy - hxy * hxy;
+      if (!(hxx < 0 && det > 0)) break;
+      const double dx = -(hyy * gx - hxy * gy) / det, dy = -(hxx * gy - hxy * gx) / det;
+      if (!(std::hypot(dx, dy) <= g.h)) break;
+      const double nx = x + dx, ny = y + dy;
+      if (nx < 0 || nx > lx || ny < 0 || ny > ly) break;
+      settled = std::hypot(dx, dy) <= 1e-13 * std::max(lx, ly);
+      x = nx, y = ny;
+    }
+    Extremum e{value(x, y), x, y};
+    // Where Newton stopped short (an indefinite Hessian near the start, a step leaving the plate),
+    // the pattern finishes the search.
+    if (!settled) e = pattern_maximum(g, value, e.value >= nodes[s].value ? x : nodes[s].x, e.value >= nodes[s].value ? y : nodes[s].y, g.h / 2);
+    if (e.value > best.value) best = e;
+  }
+  best.value *= sign;
+  return best;
+}
+// @end newton-extremum
+
+}  // namespace plate

@@ -1,0 +1,213 @@
+// liftoff: scenes where the plate lifts off part of the cylinder's rim, which the rim-contact series
+// refuses (its premise is contact all round). Each is solved on grids h = 1/16 ... 1/256 three ways:
+// the default rows, laid out for the contact (D28); rows at points; and the periodic splines alone
+// (the default before, which dips through the obstacle where the contact ends). FreeFEM's exact
+// script on gmsh meshes fitted to the circle is the independent code. Writes results/liftoff.{md,csv}.
+// `liftoff --help`.
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "active_set.hpp"
+#include "atomic_file.hpp"
+#include "contact.hpp"
+#include "error_bar.hpp"
+#include "exit_codes.hpp"
+#include "extrema.hpp"
+#include "fields.hpp"
+#include "format.hpp"
+#include "freefem.hpp"
+#include "line_force.hpp"
+#include "progress.hpp"
+#include "refinement.hpp"
+#include "stopwatch.hpp"
+
+using namespace plate;
+
+namespace {
+
+struct Scene {
+  const char* key;   // in the CSV
+  const char* name;  // in the report
+  double lx, ly, cx, cy;
+  int n16;  // cells along x for h = 1/16
+};
+// The cylinder of the paper (R = 0.0625, radius 0.25) on plates where it does not touch all round.
+const Scene kScenes[] = {{"2x1-centred", "2 x 1, centred", 2, 1, 1, 0.5, 32},
+                         {"1.5x1-centred", "1.5 x 1, centred", 1.5, 1, 0.75, 0.5, 24},
+                         {"1.5x1-off-centre", "1.5 x 1, at (0.6, 0.45)", 1.5, 1, 0.6, 0.45, 24}};
+constexpr double kR = 0.0625, kRadius = 0.25;
+
+struct Rows {
+  const char* key;   // in the CSV
+  const char* name;  // in the report
+  EdgeRows rows;
+  int finest;        // the finest grid, as a multiple of n16 (h = 1/(16 finest))
+};
+const Rows kRows[] = {{"default", "default (D28)", EdgeRows{}, 16},
+                      {"points", "points", EdgeRows::points(), 16},
+                      {"splines", "splines alone", EdgeRows::splines(3), 8}};
+
+struct Run {
+  const Scene* scene = nullptr;
+  const Rows* rows = nullptr;  // null: FreeFEM
+  int n = 0;
+  double h = 0;
+  bool certified = false;
+  double max_w = 0, force = 0, dip = 0, seconds = 0;
+  double noise_w = 0, noise_force = 0;  // what round-off may change in them (printed above it)
+  int arcs = -1, points = 0, exchanged = 0;  // the layout of the default rows (arcs -1: periodic splines)
+};
+
+Run solve(const Scene& s, const Rows& r, int n) {
+  const Field phi = cylinder(s.cx, s.cy, kRadius, kR), none = [](double, double) { return 0.0; };
+  const SamplingSpec spec{SamplingKind::Edge, circle_edge(s.cx, s.cy, kRadius), r.rows};
+  const auto t0 = Clock::now();
+  const SceneSolution x = solve_exact_scene(make_grid(n, s.lx, s.ly), spec, phi, none, ExactOptions{});
+  Run run{&s, &r, n, s.lx / n};
+  run.seconds = seconds_since(t0);
+  run.certified = x.result.converged;
+  run.max_w = extremum_of_w(x.whole().grid, x.result.w, +1).value;
+  run.force = total_contact_force(x.whole(), x.result.lambda);
+  run.dip = dip_below_edge(x.whole(), x.result.w, phi);
+  const Sampling& sam = x.whole().sampling;
+  if (sam.rim_laid_out()) {
+    run.arcs = static_cast<int>(sam.rim.arcs.size());
+    for (const RimRow& row : sam.rim_rows) run.points += row.point();
+  }
+  for (const ExactLevel& l : x.result.levels) run.exchanged += l.exchanged;
+  // A refined answer (D22) is the same on every machine to the refinement's floor; else u n^3.
+  const Refinement& refined = x.result.levels.back().refinement;
+  run.noise_w = refined.w.empty() ? exact_solve_roundoff(n, run.max_w) : refined.noise_w(x.result.w);
+  run.noise_force = refined.w.empty() ? exact_solve_roundoff(n, run.force) : refined.relative_noise_mu() * run.force;
+  return run;
+}
+
+// FreeFEM's exact script on the O-grid mesh with 4 m cells per quarter circle.
+Run freefem(const Scene& s, int m, const std::string& work) {
+  const std::string base = work + "/" + std::to_string(&s - kScenes) + "_" + std::to_string(m);
+  gmsh_mesh("reference/square_with_circle.geo", {{"n", m}, {"lx", s.lx}, {"ly", s.ly}, {"cx", s.cx}, {"cy", s.cy}, {"r", kRadius}},
+            base + ".msh");
+  write_points(base + ".points", {{s.cx, s.cy}});
+  std::ostringstream args;
+  args.precision(17);
+  args << "-points " << base << ".points -R " << kR << " -cx " << s.cx << " -cy " << s.cy << " -r " << kRadius;
+  const auto t0 = Clock::now();
+  const nlohmann::json j = run_freefem("reference/contact_hct.edp", base + ".msh", args.str(), base + ".json");
+  const CheckValues v = freefem_values(j, 4 * m, kRadius);
+  Run run{&s, nullptr, 4 * m, v.h};
+  run.seconds = seconds_since(t0);
+  run.certified = v.certified;
+  run.max_w = v.max_w;
+  run.force = v.force;
+  run.dip = NAN;
+  run.noise_w = freefem_roundoff(v.h, v.max_w), run.noise_force = freefem_roundoff(v.h, v.force);
+  return run;
+}
+
+// To the digits round-off cannot reach (format.hpp), at most 12.
+std::string num(double v, double noise) { return fmt_above(v, noise, 12, 'g'); }
+
+// The error bar on the finest value of a sequence (error_bar.hpp), as a table cell.
+std::string bar_cell(const ErrorBar& b) {
+  if (b.basis == "none") return "—";
+  return "± " + fmt_up(b.bar) + (b.steady ? fmt(" (Richardson, order %.2f)", b.order) : " (" + b.basis + "; not steady)");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  clean_up_on_interrupt("liftoff");
+  CLI::App app{"liftoff: scenes where the plate lifts off part of the rim, by the default rows (D28), rows at points,\n"
+               "the periodic splines alone, and FreeFEM on fitted meshes; writes liftoff.md and liftoff.csv.\n" +
+               std::string(kExitStatusHelp)};
+  std::string out = "results", work = "build/liftoff-work";
+  int freefem_finest = 8;
+  app.add_option("--out", out, "folder for the results")->capture_default_str();
+  app.add_option("--work", work, "folder for the meshes and FreeFEM's files")->capture_default_str();
+  app.add_option("--freefem-finest", freefem_finest, "FreeFEM's finest mesh: 4 m cells per quarter circle, m = 2, 4, ... this")
+      ->check(CLI::Range(2, 64))
+      ->capture_default_str();
+  if (const int status = parse_options(app, argc, argv, "liftoff"); status >= 0) return status;
+  try {
+    for (const char* f : {"/liftoff.md", "/liftoff.csv", "/liftoff_timings.csv"}) check_output_file("--out", out + f);
+    std::filesystem::create_directories(work);
+    Progress progress("liftoff", false);
+    std::vector<Run> runs;
+    for (const Scene& s : kScenes) {
+      for (const Rows& r : kRows)
+        for (int k = 1; k <= r.finest; k *= 2) {
+          progress.stage(std::string(s.name) + ", " + r.name + ", h = 1/" + std::to_string(16 * k));
+          runs.push_back(solve(s, r, s.n16 * k));
+        }
+      for (int m = 2; m <= freefem_finest; m *= 2) {
+        progress.stage(std::string(s.name) + ", FreeFEM, " + std::to_string(4 * m) + " cells a quarter circle");
+        runs.push_back(freefem(s, m, work));
+      }
+    }
+    // The numbers.
+    std::ostringstream csv;
+    csv << "# liftoff: scenes where the plate lifts off part of the rim (R = 0.0625, radius 0.25), by three kinds\n"
+           "# of rows on the grids h = lx/n, and by FreeFEM's exact script (n: cells along a quarter of the circle; h:\n"
+           "# the longest mesh edge). max_w is the field's maximum; dip the plate's largest depth below the rim\n"
+           "# between rows (h/32 apart); arcs and points the layout of the default rows (arcs -1: periodic\n"
+           "# splines); exchanged the point rows added where the plate dipped. Digits above round-off. Made by\n"
+           "# build/liftoff; the run times are in liftoff_timings.csv\n"
+           "scene,rows,n,h,certified,max_w,total_force,dip,arcs,points,exchanged\n";
+    std::ostringstream timings;
+    timings << "# liftoff: seconds per run (this machine, this run)\nscene,rows,n,seconds\n";
+    for (const Run& r : runs) {
+      csv << r.scene->key << ',' << (r.rows ? r.rows->key : "freefem") << ',' << r.n << ',' << fmt("%.6g", r.h) << ',' << (r.certified ? 1 : 0) << ','
+          << num(r.max_w, r.noise_w) << ',' << num(r.force, r.noise_force) << ','
+          << (std::isfinite(r.dip) ? fmt("%.2e", r.dip) : std::string()) << ',' << r.arcs << ',' << r.points << ',' << r.exchanged << '\n';
+      timings << r.scene->key << ',' << (r.rows ? r.rows->key : "freefem") << ',' << r.n << ',' << fmt("%.3g", r.seconds) << '\n';
+    }
+    // The report.
+    std::ostringstream md;
+    md << "Made by `build/liftoff` (`make liftoff`); numbers in `liftoff.csv`.\n\n";
+    int failures = 0;
+    for (const Scene& s : kScenes) {
+      md << "### " << s.name << "\n\n| h | rows | certified | max w | total force | dip / R | layout |\n|---|---|:---:|---:|---:|---:|---|\n";
+      std::vector<double> ours, theirs;
+      double ours_noise = 0, theirs_noise = 0;  // of the finest of each
+      for (const Run& r : runs) {
+        if (r.scene != &s) continue;
+        if (r.rows == &kRows[0]) ours.push_back(r.max_w), ours_noise = r.noise_w;
+        if (!r.rows) theirs.push_back(r.max_w), theirs_noise = r.noise_w;
+        failures += !r.certified;
+        const std::string layout = !r.rows ? std::to_string(r.n) + " cells a quarter circle"
+                                   : r.arcs >= 0 ? std::to_string(r.arcs) + " spline arcs, " + std::to_string(r.points) + " point rows (" +
+                                                        std::to_string(r.exchanged) + " added where the plate dipped)"
+                                   : r.rows == &kRows[1] ? "points" : "periodic splines";
+        md << "| " << (!r.rows ? fmt("%.3g", r.h) : "1/" + std::to_string(static_cast<int>(std::lround(1 / r.h)))) << " | "
+           << (r.rows ? r.rows->name : "FreeFEM") << " | " << (r.certified ? "yes" : "**no**") << " | " << num(r.max_w, r.noise_w) << " | " << num(r.force, r.noise_force) << " | "
+           << (std::isfinite(r.dip) ? fmt("%.1e", r.dip / kR) : std::string("—")) << " | " << layout << " |\n";
+      }
+      const ErrorBar a = error_bar(std::vector<double>(ours.end() - std::min<size_t>(4, ours.size()), ours.end()));
+      const ErrorBar b = error_bar(theirs);
+      const double diff = std::abs(a.value - b.value), tol = a.bar + b.bar;
+      md << "\nTable: " << s.name << ": each kind of rows on each grid, and FreeFEM on meshes fitted to the circle. Read the "
+            "dips: the periodic splines leave the plate below the obstacle where the contact ends, the default rows do not.\n\n"
+         << "max w: ours (default rows, h = 1/256) " << num(a.value, ours_noise) << " " << bar_cell(a) << "; FreeFEM (finest mesh) "
+         << num(b.value, theirs_noise) << " " << bar_cell(b) << "; they differ by " << fmt("%.1e", diff) << (diff <= tol ? ", within" : ", **more than**")
+         << " the sum of the bars, " << fmt_up(tol) << ".\n\n";
+      failures += diff > tol;
+    }
+    write_file_atomically(out + "/liftoff.csv", csv.str());
+    write_file_atomically(out + "/liftoff_timings.csv", timings.str());
+    write_file_atomically(out + "/liftoff.md", md.str());
+    if (failures) {
+      std::cerr << "liftoff: " << failures << " runs uncertified or codes that differ by more than their bars (see liftoff.md)\n";
+      return kNotConverged;
+    }
+    return kSuccess;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "liftoff: bad input: " << e.what() << "\n";
+    return kBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "liftoff: error: " << e.what() << "\n";
+    return kFailure;
+  }
+}
