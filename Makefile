@@ -3,7 +3,8 @@
 BUILD ?= build
 JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
 DRIVERS := $(BUILD)/table $(BUILD)/fig1 $(BUILD)/fig2 $(BUILD)/contraction $(BUILD)/hard_cases $(BUILD)/bench $(BUILD)/peer_snesvi \
-           $(BUILD)/micro_bench $(BUILD)/continuum $(BUILD)/time_to_accuracy $(BUILD)/prose_numbers $(BUILD)/compare_tables $(BUILD)/rim_series
+           $(BUILD)/micro_bench $(BUILD)/continuum $(BUILD)/time_to_accuracy $(BUILD)/prose_numbers $(BUILD)/compare_tables $(BUILD)/rim_series \
+           $(BUILD)/liftoff
 BINS  := $(BUILD)/plate $(BUILD)/crosscheck $(BUILD)/crosscheck_penalty $(BUILD)/plate_tests $(DRIVERS)
 PAPER_NUMBERS := reference/paper_numbers.csv
 
@@ -27,13 +28,14 @@ NUMBERS   := results/numbers.csv results/numbers_machine.csv
 CONTINUUM_DATA := results/continuum.md results/continuum.csv results/continuum_error.csv results/continuum_q.csv \
                   results/continuum_answer.md results/continuum_limits.csv results/continuum_timings.csv
 RIM_SERIES := results/rim_series.md results/rim_series.csv results/rim_answer.csv results/uniform_load.csv
+LIFTOFF   := results/liftoff.md results/liftoff.csv results/liftoff_timings.csv
 CONTINUUM := $(CONTINUUM_DATA) results/continuum.svg results/continuum.png results/continuum_q.svg results/continuum_q.png
 BENCH     := results/speed_vs_error.csv results/speed_vs_error.md
 TTA       := results/time_to_accuracy.csv results/time_to_accuracy.md
 BENCH_ALL := $(BENCH) results/speed_vs_error.svg results/speed_vs_error.png results/micro_benchmarks.md \
              $(TTA) results/time_to_accuracy.svg results/time_to_accuracy.png
 PAPER_INPUTS := paper/paper.md paper/style.css $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp src/programs/*.cpp src/programs/support/*.cpp src/programs/support/*.hpp) \
-                $(RESULTS) $(RIM_SERIES) $(CONTINUUM) $(CROSSCHECK) $(RIM_FIGURE) $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) $(TABLE_FIGURE) $(HARD_CASES) $(BENCH_ALL) $(NUMBERS)
+                $(RESULTS) $(RIM_SERIES) $(CONTINUUM) $(LIFTOFF) $(CROSSCHECK) $(RIM_FIGURE) $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) $(TABLE_FIGURE) $(HARD_CASES) $(BENCH_ALL) $(NUMBERS)
 # The packages whose versions the document's reference list gives.
 VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread libmuparser-dev libcli11-dev freefem++ gmsh \
              libpetsc-real-dev libmumps-dev pandoc gnuplot-nox g++ cmake libgtest-dev libbenchmark-dev
@@ -42,9 +44,9 @@ VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread libmuparser-d
 # scripts/step.sh also says, when it ends, how long it took (and logs it to build/step-times.log).
 say = @printf '\n== make: %s (about %s)\n' $(1) $(2)
 
-.PHONY: all test deps build results paper document crosscheck hard-cases continuum rim-series bench check-results clean help FORCE
+.PHONY: all test deps build results paper document crosscheck hard-cases continuum rim-series liftoff bench check-results clean help FORCE
 
-all: build results rim-series continuum crosscheck hard-cases bench paper ## build, then every result, figure, benchmark and the document (about 25 minutes here, 2 cores)
+all: build results rim-series continuum liftoff crosscheck hard-cases bench paper ## build, then every result, figure, benchmark and the document (about 25 minutes here, 2 cores)
 
 help: ## list the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 12
@@ -95,6 +97,12 @@ continuum: $(CONTINUUM) ## the h -> 0 limit: exact solves n = 8 ... 512, three s
 # The timings file is written by the same run; it is not byte-identical between runs.
 $(CONTINUUM_DATA) &: $(BUILD)/continuum $(PAPER_NUMBERS)
 	scripts/step.sh "results/continuum*: exact solves n = 8 ... 512 with three samplings" "1 min" $(BUILD)/continuum --out results
+
+liftoff: $(LIFTOFF) ## scenes where the plate lifts off part of the rim: three kinds of rows, and FreeFEM on fitted meshes (about 2 min)
+
+# The timings file is written by the same run; it is not byte-identical between runs.
+$(LIFTOFF) &: $(BUILD)/liftoff reference/square_with_circle.geo reference/contact_hct.edp | deps
+	scripts/step.sh "results/liftoff*: scenes where the plate lifts off part of the rim, and FreeFEM on fitted meshes" "2 min" $(BUILD)/liftoff --out results --work $(BUILD)/liftoff-work
 
 results/continuum.svg results/continuum.png: results/continuum_error.csv
 results/continuum_q.svg results/continuum_q.png: results/continuum_q.csv
@@ -158,7 +166,7 @@ results/versions.csv: scripts/deps.sh | deps
 	@test $$(grep -c . $@.tmp) -eq $$(( $(words $(VERSIONED)) + 1 )) || { echo "versions.csv: dpkg-query did not find every package of VERSIONED" >&2; rm -f $@.tmp; exit 1; }
 	mv $@.tmp $@
 
-$(NUMBERS) &: $(BUILD)/prose_numbers $(RESULTS) $(RIM_SERIES) $(CONTINUUM_DATA) $(CROSSCHECK) $(HARD_CASES) $(BENCH) results/versions.csv \
+$(NUMBERS) &: $(BUILD)/prose_numbers $(RESULTS) $(RIM_SERIES) $(CONTINUUM_DATA) results/liftoff.csv $(CROSSCHECK) $(HARD_CASES) $(BENCH) results/versions.csv \
                $(wildcard results/rebuild_times.csv) reference/plate_constants.csv
 	$(BUILD)/prose_numbers --out results
 
@@ -185,14 +193,15 @@ CHECKED_continuum   := continuum.md continuum.csv continuum_error.csv continuum_
 CHECKED_crosscheck  := crosscheck.md crosscheck.csv crosscheck_agreement.csv crosscheck_rim.csv
 CHECKED_crosscheck_penalty := crosscheck_penalty.md crosscheck_penalty_table.csv crosscheck_penalty_eps.csv crosscheck_penalty_fig2.csv
 CHECKED_rim_series  := rim_series.md rim_series.csv rim_answer.csv uniform_load.csv
+CHECKED_liftoff     := liftoff.md liftoff.csv
 CHECK_DIR := $(BUILD)/check-results
 
 check-results: build ## rebuild every deterministic table into build/check-results and compare it with results/ (about 12 min)
-	$(call say,"check-results: rim_series table contraction fig1 fig2 continuum crosscheck crosscheck_penalty rebuilt and compared with results/","12 min")
+	$(call say,"check-results: rim_series table contraction fig1 fig2 continuum liftoff crosscheck crosscheck_penalty rebuilt and compared with results/","14 min")
 	@rm -rf $(CHECK_DIR); status=0; \
-	for d in rim_series table contraction fig1 fig2 continuum crosscheck crosscheck_penalty; do \
+	for d in rim_series table contraction fig1 fig2 continuum liftoff crosscheck crosscheck_penalty; do \
 	  mkdir -p $(CHECK_DIR)/$$d; \
-	  extra=; case $$d in crosscheck*) extra="--work $(CHECK_DIR)/$$d-work";; esac; \
+	  extra=; case $$d in crosscheck*|liftoff) extra="--work $(CHECK_DIR)/$$d-work";; esac; \
 	  echo "== $$d"; \
 	  $(BUILD)/$$d --out $(CHECK_DIR)/$$d $$extra > $(CHECK_DIR)/$$d.log 2>&1 \
 	    || { echo "$$d failed (exit $$?); its output is in $(CHECK_DIR)/$$d.log"; status=1; continue; }; \
@@ -200,6 +209,7 @@ check-results: build ## rebuild every deterministic table into build/check-resul
 	    table) files="$(CHECKED_table)";; contraction) files="$(CHECKED_contraction)";; fig1) files="$(CHECKED_fig1)";; \
 	    fig2) files="$(CHECKED_fig2)";; continuum) files="$(CHECKED_continuum)";; crosscheck) files="$(CHECKED_crosscheck)";; \
 	    rim_series) files="$(CHECKED_rim_series)";; crosscheck_penalty) files="$(CHECKED_crosscheck_penalty)";; \
+	    liftoff) files="$(CHECKED_liftoff)";; \
 	  esac; \
 	  $(BUILD)/compare_tables --expected results --rebuilt $(CHECK_DIR)/$$d $$files || status=1; \
 	done; \

@@ -1,9 +1,9 @@
-// The unit square with the obstacle's circle (centre (cx, cy), radius r) meshed as an O-grid of
-// transfinite patches: a central square, a ring out to the circle, and four patches from the circle
-// to the plate's sides. Mesh vertices lie on the circle (the contact line), 4 n cells along each
+// The rectangle [0, lx] x [0, ly] (the unit square by default) with the obstacle's circle (centre
+// (cx, cy), radius r) meshed as an O-grid of transfinite patches: a central square, a ring out to
+// the circle, and four patches from the circle to the plate's sides. Mesh vertices lie on the circle (the contact line), 4 n cells along each
 // quarter of it, and a vertex at the centre; each n doubled refines every patch the same way, so
 // the errors shrink at a steady rate.
-//   gmsh -2 -format msh22 -setnumber n 4 square_with_circle.geo -o mesh.msh
+//   gmsh -2 -format msh22 -setnumber n 4 [-setnumber lx 2 -setnumber ly 1 -setnumber cx 1 ...] square_with_circle.geo -o mesh.msh
 // Physical tags, read by FreeFEM's gmshload as labels: 1 = clamped boundary, 2 = circle, 1 = surface.
 If (!Exists(n))
   n = 2;
@@ -17,6 +17,12 @@ EndIf
 If (!Exists(cy))
   cy = 0.5;
 EndIf
+If (!Exists(lx))
+  lx = 1;
+EndIf
+If (!Exists(ly))
+  ly = 1;
+EndIf
 N = 4 * n;      // cells along a quarter of the circle, a side of the central square, a side of the plate
 M1 = n;         // cells from the central square out to the circle
 M2 = 3 * n;     // cells from the circle out to the plate's corners
@@ -28,7 +34,7 @@ Point(2) = {cx + a, cy - a, 0}; Point(3) = {cx + a, cy + a, 0};
 Point(4) = {cx - a, cy + a, 0}; Point(5) = {cx - a, cy - a, 0};
 Point(6) = {cx + r * s, cy - r * s, 0}; Point(7) = {cx + r * s, cy + r * s, 0};
 Point(8) = {cx - r * s, cy + r * s, 0}; Point(9) = {cx - r * s, cy - r * s, 0};
-Point(10) = {1, 0, 0}; Point(11) = {1, 1, 0}; Point(12) = {0, 1, 0}; Point(13) = {0, 0, 0};
+Point(10) = {lx, 0, 0}; Point(11) = {lx, ly, 0}; Point(12) = {0, ly, 0}; Point(13) = {0, 0, 0};
 Line(1) = {2, 3}; Line(2) = {3, 4}; Line(3) = {4, 5}; Line(4) = {5, 2};                          // central square
 Circle(5) = {6, 1, 7}; Circle(6) = {7, 1, 8}; Circle(7) = {8, 1, 9}; Circle(8) = {9, 1, 6};      // the circle
 Line(9) = {10, 11}; Line(10) = {11, 12}; Line(11) = {12, 13}; Line(12) = {13, 10};               // the plate's sides

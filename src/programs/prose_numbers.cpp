@@ -294,6 +294,25 @@ void rim_series_numbers(Numbers& num, const std::string& results) {
   }
 }
 
+// The lift-off scenes (results/liftoff.csv): the deepest dip of the splines alone, and of the
+// default rows on each scene's finest grid, both relative to R.
+void liftoff_numbers(Numbers& num, const std::string& results) {
+  const CsvTable t = read_csv_table(results + "/liftoff.csv");
+  const double R = 0.0625;  // the cylinder's height on every lift-off scene (liftoff.cpp)
+  const std::string src = "results/liftoff.csv";
+  Range splines, finest;
+  for (std::size_t r : t.where("rows", "splines")) splines.add(t.number(r, "dip") / R);
+  std::map<std::string, std::pair<double, double>> last;  // scene -> (h, dip) of its finest default row
+  for (std::size_t r : t.where("rows", "default")) {
+    auto& l = last[t.text(r, "scene")];
+    if (l.first == 0 || t.number(r, "h") < l.first) l = {t.number(r, "h"), t.number(r, "dip") / R};
+  }
+  for (const auto& [scene, l] : last) finest.add(l.second);
+  const auto percent = [](double v) { return fmt("%.2g", 100 * v) + " %"; };
+  num.put("liftoff.spline_dip_max", percent(splines.hi), src + " splines rows: max dip / R");
+  num.put("liftoff.default_dip_finest_max", fmt("%.1e", finest.hi), src + " default rows on each scene's finest grid: max dip / R");
+}
+
 // Package versions of the machine that built the document (results/versions.csv, from dpkg).
 void version_numbers(Numbers& num, const std::string& results) {
   const CsvTable t = read_csv_table(results + "/versions.csv");
@@ -367,6 +386,7 @@ int main(int argc, char** argv) {
     hard_cases_numbers(fixed, results);
     continuum_numbers(fixed, results);
     rim_series_numbers(fixed, results);
+    liftoff_numbers(fixed, results);
     linear_history_numbers(fixed, results);
     published_numbers(fixed, reference);
     model_numbers(fixed);
