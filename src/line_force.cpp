@@ -24,6 +24,30 @@ void fit_harmonics(LineForce& f, int harmonics) {
   const Eigen::VectorXd a = A.colPivHouseholderQr().solve(b);
   f.fourier.assign(a.data(), a.data() + a.size());
 }
+// A spline line load is a function of the angle: its extremes lie between the knots too. Sampled at
+// 720 angles, then each closed in on by golden sections over the two steps about the best sample.
+void refine_extremes(LineForce& f) {
+  const int angles = 720;
+  const double step = 2 * M_PI / angles, ratio = 0.5 * (std::sqrt(5.0) - 1);
+  for (double sign : {+1.0, -1.0}) {
+    int best = 0;
+    double top = -INFINITY;
+    for (int k = 0; k < angles; ++k)
+      if (const double q = sign * line_force_value(f, k * step); q > top) top = q, best = k;
+    double lo = (best - 1) * step, hi = (best + 1) * step;
+    double a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
+    double fa = sign * line_force_value(f, a), fb = sign * line_force_value(f, b);
+    while (hi - lo > 1e-12) {
+      if (fa > fb) hi = b, b = a, fb = fa, a = hi - ratio * (hi - lo), fa = sign * line_force_value(f, a);
+      else lo = a, a = b, fa = fb, b = lo + ratio * (hi - lo), fb = sign * line_force_value(f, b);
+    }
+    const double t = std::max(fa, fb) > top ? (fa > fb ? a : b) : best * step;
+    const double v = sign * std::max({fa, fb, top});
+    if (sign > 0 && v >= f.max) f.max = v, f.theta_max = std::remainder(t, 2 * M_PI);
+    if (sign < 0 && v <= f.min) f.min = v, f.theta_min = std::remainder(t, 2 * M_PI);
+  }
+}
+
 void summarise(LineForce& f) {
   f.mean = f.total / f.length;
   f.min = *std::min_element(f.q.begin(), f.q.end());
@@ -71,10 +95,7 @@ LineForce line_force(const Problem& p, const VectorXd& lambda, int harmonics) {
     f.total += s.weights[row] * lambda[row];
   }
   summarise(f);
-  for (int k = 0; f.spline_degree > 0 && k < 720; ++k) {  // a function: its extremes between the knots too
-    const double q = line_force_value(f, 2 * M_PI * k / 720);
-    f.min = std::min(f.min, q), f.max = std::max(f.max, q);
-  }
+  if (f.spline_degree > 0) refine_extremes(f);
   fit_harmonics(f, harmonics);
   return f;
 }

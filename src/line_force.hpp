@@ -2,6 +2,7 @@
 // With edge sampling the multiplier at an edge point is a force per unit length, so q(theta) is
 // read off directly, and its total over the rim is the obstacle's whole push on the plate.
 #pragma once
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -15,6 +16,7 @@ struct LineForce {
   double total = 0;              // sum_p W_p q_p over the edge points
   double mean = 0;               // total / length
   double min = 0, max = 0;
+  double theta_min = NAN, theta_max = NAN;  // where (a spline's extremes, found between the knots)
   // Least-squares fit q(theta) ~ sum_k a_k cos(4 k theta), k = 0..harmonics-1: the harmonics the
   // square's eight symmetries allow for a function on a circle about the square's centre (fewer
   // when M points cannot tell them apart: 4 k <= M / 2).

@@ -117,7 +117,8 @@ Json line_force_json(const LineForce& f) {
   if (f.empty()) return nullptr;
   Json j = {{"rows", f.q.size()}, {"rows_are", f.spline_degree > 0 ? "spline knots" : "points"},
             {"length", number(f.length)}, {"total", number(f.total)},
-            {"mean", number(f.mean)}, {"min", number(f.min)}, {"max", number(f.max)}};
+            {"mean", number(f.mean)}, {"min", number(f.min)}, {"max", number(f.max)},
+            {"theta_min", number(f.theta_min)}, {"theta_max", number(f.theta_max)}};
   if (!f.theta.empty()) {
     j["q_fit_theta_0"] = number(line_force_fit(f, 0));
     j["q_fit_theta_pi_4"] = number(line_force_fit(f, M_PI / 4));
@@ -267,7 +268,9 @@ std::string summary_text(const Report& r) {
   if (!r.line.empty()) {
     const LineForce& l = r.line;
     o << "line load on the edge (" << l.q.size() << (l.spline_degree > 0 ? " spline knots" : " points") << "): mean " << num(l.mean) << " (total " << num(l.total)
-      << " over length " << num(l.length) << "), min " << num(l.min) << ", max " << num(l.max);
+      << " over length " << num(l.length) << "), min " << num(l.min)
+      << (std::isfinite(l.theta_min) ? " at theta = " + num(l.theta_min) : std::string()) << ", max " << num(l.max)
+      << (std::isfinite(l.theta_max) ? " at theta = " + num(l.theta_max) : std::string());
     if (!l.theta.empty() && l.spline_degree > 0)
       o << "; q(0) = " << num(line_force_value(l, 0)) << ", q(pi/4) = " << num(line_force_value(l, M_PI / 4)) << " (the spline)";
     else if (!l.theta.empty())
