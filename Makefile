@@ -5,7 +5,8 @@ JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
 DRIVERS := $(BUILD)/table $(BUILD)/fig1 $(BUILD)/fig2 $(BUILD)/contraction $(BUILD)/hard_cases $(BUILD)/bench $(BUILD)/peer_snesvi \
            $(BUILD)/micro_bench $(BUILD)/continuum $(BUILD)/time_to_accuracy $(BUILD)/prose_numbers $(BUILD)/compare_tables $(BUILD)/rim_series \
            $(BUILD)/liftoff
-BINS  := $(BUILD)/plate $(BUILD)/crosscheck $(BUILD)/crosscheck_penalty $(BUILD)/plate_tests $(DRIVERS)
+TESTS := $(BUILD)/unit_tests $(BUILD)/fine_tests $(BUILD)/program_tests $(BUILD)/freefem_tests $(BUILD)/document_tests
+BINS  := $(BUILD)/plate $(BUILD)/crosscheck $(BUILD)/crosscheck_penalty $(TESTS) $(DRIVERS)
 PAPER_NUMBERS := reference/paper_numbers.csv
 
 TABLES    := results/table.md results/table.csv results/table_fine.md results/table_fine.csv
@@ -44,7 +45,7 @@ VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread libmuparser-d
 # scripts/step.sh also says, when it ends, how long it took (and logs it to build/step-times.log).
 say = @printf '\n== make: %s (about %s)\n' $(1) $(2)
 
-.PHONY: all test deps build results paper document crosscheck hard-cases continuum rim-series liftoff bench check-results clean help FORCE
+.PHONY: all test test-fast deps build results paper document crosscheck hard-cases continuum rim-series liftoff bench check-results clean help FORCE
 
 all: build results rim-series continuum liftoff crosscheck hard-cases bench paper ## build, then every result, figure, benchmark and the document (about 25 minutes here, 2 cores)
 
@@ -65,8 +66,11 @@ $(BINS) &: FORCE | deps $(BUILD)/CMakeCache.txt
 
 build: $(BINS) ## compile the solver, the plate program and the tests
 
-test: build ## run the test suite
+test: build ## run the test suite (every label: unit, fine, program, freefem, document)
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+
+test-fast: build ## the unit tests alone, the mathematics (under 30 s here)
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -L unit
 
 crosscheck: results/crosscheck.md $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) $(TABLE_FIGURE) ## FreeFEM (HCT, gmsh) against this code, exactly and by the paper's penalty method: results/crosscheck.md, results/crosscheck_penalty.md
 
@@ -182,35 +186,36 @@ results/paper.html: $(PAPER_INPUTS) | deps
 	$(call say,"results/paper.html","10 s")
 	$(render_paper)
 
-# Each driver that writes a deterministic table, its files (timings are not), rebuilt into a scratch
-# folder and compared with the committed ones number by number (build/compare_tables: one unit in the
-# last printed digit), never byte for byte. `make test` runs the drivers that take seconds the same way.
-CHECKED_table       := table.csv table.md table_fine.csv table_fine.md
-CHECKED_contraction := contraction.md contraction.csv linear_history.csv
-CHECKED_fig1        := fig1_points.csv fig1_surface.dat fig1_contact.dat
-CHECKED_fig2        := fig2.csv fig2_mesh.csv fig2_fit.md fig2_mesh.md
-CHECKED_continuum   := continuum.md continuum.csv continuum_error.csv continuum_q.csv continuum_answer.md continuum_limits.csv
-CHECKED_crosscheck  := crosscheck.md crosscheck.csv crosscheck_agreement.csv crosscheck_rim.csv
-CHECKED_crosscheck_penalty := crosscheck_penalty.md crosscheck_penalty_table.csv crosscheck_penalty_eps.csv crosscheck_penalty_fig2.csv
-CHECKED_rim_series  := rim_series.md rim_series.csv rim_answer.csv uniform_load.csv
-CHECKED_liftoff     := liftoff.md liftoff.csv
+# Each driver that writes a deterministic table, its files (the lists above, timings left out: they
+# differ on every run), rebuilt into a scratch folder and compared with the committed ones number by
+# number (build/compare_tables: one unit in the last printed digit), never byte for byte. `make test`
+# runs the drivers that take seconds the same way.
+CHECKED_DRIVERS := rim_series table contraction fig1 fig2 continuum liftoff crosscheck crosscheck_penalty
+untimed = $(notdir $(filter-out %_timings.csv,$(1)))
+CHECKED_table              := $(call untimed,$(TABLES))
+CHECKED_contraction        := $(call untimed,$(CONTRACTION))
+CHECKED_fig1               := $(call untimed,$(FIG1_DATA))
+CHECKED_fig2               := $(call untimed,$(FIG2_DATA))
+CHECKED_continuum          := $(call untimed,$(CONTINUUM_DATA))
+CHECKED_crosscheck         := $(call untimed,$(CROSSCHECK))
+CHECKED_crosscheck_penalty := $(call untimed,$(CROSSCHECK_PENALTY))
+CHECKED_rim_series         := $(call untimed,$(RIM_SERIES))
+CHECKED_liftoff            := $(call untimed,$(LIFTOFF))
 CHECK_DIR := $(BUILD)/check-results
+comma := ,
+empty :=
+space := $(empty) $(empty)
 
-check-results: build ## rebuild every deterministic table into build/check-results and compare it with results/ (about 12 min)
-	$(call say,"check-results: rim_series table contraction fig1 fig2 continuum liftoff crosscheck crosscheck_penalty rebuilt and compared with results/","14 min")
+check-results: build ## rebuild every deterministic table into build/check-results and compare it with results/ (about 14 min)
+	$(call say,"check-results: $(CHECKED_DRIVERS) rebuilt and compared with results/","14 min")
 	@rm -rf $(CHECK_DIR); status=0; \
-	for d in rim_series table contraction fig1 fig2 continuum liftoff crosscheck crosscheck_penalty; do \
+	for spec in $(foreach d,$(CHECKED_DRIVERS),$(d):$(subst $(space),$(comma),$(CHECKED_$(d)))); do \
+	  d=$${spec%%:*}; files=$$(echo "$${spec#*:}" | tr , ' '); \
 	  mkdir -p $(CHECK_DIR)/$$d; \
 	  extra=; case $$d in crosscheck*|liftoff) extra="--work $(CHECK_DIR)/$$d-work";; esac; \
 	  echo "== $$d"; \
 	  $(BUILD)/$$d --out $(CHECK_DIR)/$$d $$extra > $(CHECK_DIR)/$$d.log 2>&1 \
 	    || { echo "$$d failed (exit $$?); its output is in $(CHECK_DIR)/$$d.log"; status=1; continue; }; \
-	  case $$d in \
-	    table) files="$(CHECKED_table)";; contraction) files="$(CHECKED_contraction)";; fig1) files="$(CHECKED_fig1)";; \
-	    fig2) files="$(CHECKED_fig2)";; continuum) files="$(CHECKED_continuum)";; crosscheck) files="$(CHECKED_crosscheck)";; \
-	    rim_series) files="$(CHECKED_rim_series)";; crosscheck_penalty) files="$(CHECKED_crosscheck_penalty)";; \
-	    liftoff) files="$(CHECKED_liftoff)";; \
-	  esac; \
 	  $(BUILD)/compare_tables --expected results --rebuilt $(CHECK_DIR)/$$d $$files || status=1; \
 	done; \
 	if [ $$status = 0 ]; then echo "check-results: every table agrees with results/"; \

@@ -74,9 +74,10 @@ double penalty_backward_error(const Problem& p, const VectorXd& w, double eps) {
   return scale > 0 ? r.lpNorm<Eigen::Infinity>() / scale : r.lpNorm<Eigen::Infinity>();
 }
 
-double dip_below_edge(const Problem& p, const VectorXd& w, const Field& obstacle) {
-  if (!has_edge(p.spec.kind) || p.spec.edge.empty()) return NAN;
-  const EdgePoints e = edge_points(p.spec.edge, p.grid.h / 32);
+double dip_below_edge(const Problem& p, const VectorXd& w) {
+  const Field& obstacle = p.scene.obstacle;
+  if (!has_edge(p.spec.kind) || p.scene.edge.empty()) return NAN;
+  const EdgePoints e = edge_points(p.scene.edge, p.grid.h / 32);
   double dip = 0;
   for (int k = 0; k < e.size(); ++k) {
     const double phi = obstacle_on_edge(obstacle, e.x[k], e.y[k], e.nx[k], e.ny[k], p.grid.h);
@@ -85,12 +86,12 @@ double dip_below_edge(const Problem& p, const VectorXd& w, const Field& obstacle
   return dip;
 }
 
-NodalFields nodal_fields(const Problem& p, const VectorXd& w, const Field& obstacle, double eps, double nu) {
-  return nodal_fields(p, w, obstacle, contact_force_density(p, w, eps), nu);
+NodalFields nodal_fields(const Problem& p, const VectorXd& w, double eps, double nu) {
+  return nodal_fields(p, w, contact_force_density(p, w, eps), nu);
 }
 
-NodalFields nodal_fields(const Problem& p, const VectorXd& w, const Field& obstacle, const VectorXd& xi_samples,
-                         double nu) {
+NodalFields nodal_fields(const Problem& p, const VectorXd& w, const VectorXd& xi_samples, double nu) {
+  const Field& obstacle = p.scene.obstacle;
   const Grid& g = p.grid;
   const VectorXd force = p.sampling.S.transpose() * p.sampling.weights.cwiseProduct(xi_samples);
   NodalFields f;

@@ -42,7 +42,7 @@ double penalty_backward_error(const Problem& p, const VectorXd& w, double eps);
 // How far the plate dips below the obstacle along its edge curve between the rows that constrain it
 // (spline rows average w, point rows hold it at points): max over points h / 32 apart on the curve of
 // phi - w_h, 0 if the plate is nowhere below. NaN without an edge curve.
-double dip_below_edge(const Problem& p, const VectorXd& w, const Field& obstacle);
+double dip_below_edge(const Problem& p, const VectorXd& w);
 
 // Everything the paper reports "at the nodes of the grid", at all (nx+1)(ny+1) nodes.
 // Second derivatives jump across element edges; at a node we average the elements around it.
@@ -54,9 +54,9 @@ struct NodalFields {
   std::vector<bool> contact;  // xi > 0
   int size() const { return static_cast<int>(x.size()); }
 };
-NodalFields nodal_fields(const Problem& p, const VectorXd& w, const Field& obstacle, double eps, double nu);
+NodalFields nodal_fields(const Problem& p, const VectorXd& w, double eps, double nu);
 // The same with the force density at the sample points given (the exact solver's multipliers).
-NodalFields nodal_fields(const Problem& p, const VectorXd& w, const Field& obstacle, const VectorXd& xi_samples,
+NodalFields nodal_fields(const Problem& p, const VectorXd& w, const VectorXd& xi_samples,
                          double nu);
 
 }  // namespace plate

@@ -16,11 +16,11 @@
 
 namespace plate {
 
-CheckValues solve_ours(int n, const SamplingSpec& spec, const Field& phi, const EdgeCurve& rim) {
+CheckValues solve_ours(const Scene& s, int n, const SamplingSpec& spec) {
+  const EdgeCurve& rim = s.edge;
   const double radius = rim.r;
   const auto t0 = Clock::now();
-  const Field no_load = [](double, double) { return 0.0; };
-  const SceneSolution scene = solve_exact_scene(make_grid(n), spec, phi, no_load, ExactOptions{});
+  const SceneSolution scene = solve_exact_scene(s, n, spec, ExactOptions{});
   const Problem& p = scene.whole();
   const ExactResult& x = scene.result;
   CheckValues v;

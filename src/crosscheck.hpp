@@ -10,6 +10,7 @@
 
 #include "line_force.hpp"
 #include "problem.hpp"
+#include "scene.hpp"
 #include "richardson.hpp"
 
 namespace plate {
@@ -47,10 +48,11 @@ struct CheckValues {
 std::vector<double> values_of(const std::vector<CheckValues>& runs, double CheckValues::*field);
 std::vector<double> values_at(const std::vector<CheckValues>& runs, int point);
 
-// Our side: the exact discrete solution on n x n squares with f = 0, the constraint sampled as
-// `spec` says; its line load on the circle `rim` (binned into kRimBins arcs for samplings off it).
+// Our side: the exact discrete solution of the scene (a cylinder) on n x n squares, the constraint
+// sampled as `spec` says; its line load on the cylinder's rim (binned into kRimBins arcs for
+// samplings off it).
 constexpr int kRimBins = 32;  // arcs of about 6 h at n = 128: a few touching samples each
-CheckValues solve_ours(int n, const SamplingSpec& spec, const Field& phi, const EdgeCurve& rim);
+CheckValues solve_ours(const Scene& s, int n, const SamplingSpec& spec);
 // Our clamped square under f = 1: w(0.5, 0.5).
 double uniform_load_centre_ours(int n);
 

@@ -80,13 +80,6 @@ Refinement refine_held(const Problem& p, const Cholesky& chol, const Schur& schu
 
 }  // namespace
 
-double answer_scale(const Problem& p, const VectorXd& w_free) {
-  double s = max_nodal_abs(w_free);
-  for (int q = 0; q < p.phi.size(); ++q)
-    if (std::isfinite(p.phi[q])) s = std::max(s, std::abs(p.phi[q]));
-  return s;
-}
-
 ExactResult solve_exact_rows(const Problem& p, const ExactOptions& o, const NodeSet& candidates) {
   // Without an exchange nothing is appended to p: the solve only reads it.
   return solve_exact_rows(const_cast<Problem&>(p), o, candidates, RowExchange{}, nullptr);

@@ -5,8 +5,8 @@
 #pragma once
 #include <functional>
 
-#include "active_set.hpp"
 #include "cholesky.hpp"
+#include "exact.hpp"
 
 namespace plate {
 
@@ -16,11 +16,6 @@ constexpr int kGramBlock = 32;
 
 // `candidates` (one flag per sample row; empty: none) are the rows predicted to touch, for
 // instance by the solution on a coarser grid. Rows found violated later join them.
-// The size of the answer: the largest finite obstacle value at a sample, or the largest nodal value
-// of the free plate w_free = K^{-1} F if that is larger; 0 when both vanish. Tolerances relative to
-// it do not depend on the units of length or on the obstacle's height.
-double answer_scale(const Problem& p, const VectorXd& w_free);
-
 ExactResult solve_exact_rows(const Problem& p, const ExactOptions& o, const NodeSet& candidates);
 
 // Rows a solve adds to its problem as it goes. Called whenever the rows it has are all satisfied, it

@@ -91,26 +91,23 @@ void for_each_point(const Grid& g, bool nodes, bool gauss, Visit visit) {
         for (double t : q.points) visit(g.x(ex) + t * g.h, g.y(ey) + s * g.h);
 }
 
-bool symmetric_in(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load, const Reflection& r) {
+bool symmetric_in(const Grid& g, const SamplingSpec& spec, const Scene& s, const Reflection& r) {
+  const Field &obstacle = s.obstacle, &load = s.load;
   if ((r.in_x ? g.nx : g.ny) % 2) return false;  // the line must be a grid line
   const bool gauss = spec.kind == SamplingKind::Gauss || spec.kind == SamplingKind::EdgeGauss;
   Comparison phi, f;
   for_each_point(g, true, gauss, [&](double x, double y) { phi.add(obstacle(x, y), obstacle(r.x(x), r.y(y))); });
   for_each_point(g, false, true, [&](double x, double y) { f.add(load(x, y), load(r.x(x), r.y(y))); });
-  if (has_edge(spec.kind) && !spec.edge.empty()) {
-    const EdgePoints e = edge_points(spec.edge, g.h);
+  if (has_edge(spec.kind) && !s.edge.empty()) {
+    const EdgePoints e = edge_points(s.edge, g.h);
     const PointIndex index(e.x, e.y, 1e-9 * g.h);
     for (int k = 0; k < e.size(); ++k) {
       if (index.find(r.x(e.x[k]), r.y(e.y[k])) < 0) return false;  // the edge's points are not symmetric
-      // The obstacle's envelope on its edge (make_problem reads the largest of the values on the curve
-      // and just either side of it: which side rounding puts a point of the curve on is chance).
-      double here = -INFINITY, there = -INFINITY;
-      for (double side : {-1e-9, 0.0, 1e-9}) {
-        const double x = e.x[k] + side * g.h * e.nx[k], y = e.y[k] + side * g.h * e.ny[k];
-        here = std::max(here, obstacle(x, y));
-        there = std::max(there, obstacle(r.x(x), r.y(y)));
-      }
-      phi.add(here, there);
+      // The obstacle's envelope on its edge, as make_problem reads it, at the point and at its image
+      // (whose inward normal is the reflected one).
+      const double nx = r.in_x ? -e.nx[k] : e.nx[k], ny = r.in_x ? e.ny[k] : -e.ny[k];
+      phi.add(obstacle_on_edge(obstacle, e.x[k], e.y[k], e.nx[k], e.ny[k], g.h),
+              obstacle_on_edge(obstacle, r.x(e.x[k]), r.y(e.y[k]), nx, ny, g.h));
     }
   }
   return phi.same() && f.same();
@@ -118,11 +115,11 @@ bool symmetric_in(const Grid& g, const SamplingSpec& spec, const Field& obstacle
 
 }  // namespace
 
-Mirrors find_mirrors(const Grid& whole, const SamplingSpec& spec, const Field& obstacle, const Field& load) {
+Mirrors find_mirrors(const Scene& s, const Grid& whole, const SamplingSpec& spec) {
   if (whole.is_part()) throw std::invalid_argument("find_mirrors: the grid must be a whole plate");
   Mirrors m;
-  m.x = symmetric_in(whole, spec, obstacle, load, Reflection{true, whole.lx(), whole.ly()});
-  m.y = symmetric_in(whole, spec, obstacle, load, Reflection{false, whole.lx(), whole.ly()});
+  m.x = symmetric_in(whole, spec, s, Reflection{true, whole.lx(), whole.ly()});
+  m.y = symmetric_in(whole, spec, s, Reflection{false, whole.lx(), whole.ly()});
   return m;
 }
 

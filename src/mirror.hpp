@@ -28,7 +28,7 @@ std::string describe(Mirrors m);
 // obstacle at every node, Gauss point and edge point, and the load at every Gauss point (where F
 // samples it), must equal their values at the mirror images to 1e-12 of each pair's own size
 // (plus 1e-15 of the field's largest, for values near zero).
-Mirrors find_mirrors(const Grid& whole, const SamplingSpec& spec, const Field& obstacle, const Field& load);
+Mirrors find_mirrors(const Scene& s, const Grid& whole, const SamplingSpec& spec);
 
 // The part of `whole` that the mirrors leave: half the cells across each mirror line, the line its
 // mirror edge.

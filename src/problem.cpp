@@ -71,10 +71,6 @@ void check_obstacle_value(double x, double y, double v) {
 }
 }  // namespace
 
-Problem make_problem(const Grid& g, SamplingKind kind, const Field& obstacle, const Field& load) {
-  return make_problem(g, SamplingSpec{kind, {}}, obstacle, load);
-}
-
 // The obstacle at every grid node must be a number (or -inf), whatever the sampling: a NaN between
 // samples would otherwise pass unseen and show up in the nodal output.
 void check_obstacle_at_nodes(const Grid& g, const Field& obstacle) {
@@ -107,33 +103,37 @@ void sample_obstacle(Problem& p, const Field& obstacle, int first) {
 }
 }  // namespace
 
-Problem make_samples(const Grid& g, const SamplingSpec& spec, const Field& obstacle) {
-  check_obstacle_on_boundary(g, obstacle);
-  check_obstacle_at_nodes(g, obstacle);
+Problem make_samples(const Scene& s, const Grid& g, const SamplingSpec& spec) {
+  const double tol = 1e-9 * g.h;
+  if (std::abs(g.whole_lx() - s.lx) > tol || std::abs(g.whole_ly() - s.ly) > tol)
+    throw std::invalid_argument("the grid covers [0, " + std::to_string(g.whole_lx()) + "] x [0, " + std::to_string(g.whole_ly()) +
+                                "], not the scene's rectangle [0, " + std::to_string(s.lx) + "] x [0, " + std::to_string(s.ly) + "]");
+  check_obstacle_on_boundary(g, s.obstacle);
+  check_obstacle_at_nodes(g, s.obstacle);
   // Without an edge curve the edge kinds keep their interior samples alone.
-  Problem p{g, make_sampling(g, spec.kind, spec.edge, spec.rows), {}, {}, {}, {}, spec};
-  sample_obstacle(p, obstacle, 0);
+  Problem p{g, make_sampling(g, spec.kind, s.edge, spec.rows), {}, {}, {}, {}, spec, s};
+  sample_obstacle(p, s.obstacle, 0);
   return p;
 }
 
-void lay_out_rim(Problem& p, const RimLayout& layout, const Field& obstacle) {
-  p.sampling = make_sampling(p.grid, p.spec.kind, p.spec.edge, p.spec.rows, layout);
-  sample_obstacle(p, obstacle, 0);
+void lay_out_rim(Problem& p, const RimLayout& layout) {
+  p.sampling = make_sampling(p.grid, p.spec.kind, p.scene.edge, p.spec.rows, layout);
+  sample_obstacle(p, p.scene.obstacle, 0);
   p.M = sampling_mass(p.grid, p.sampling);
 }
 
-void append_rim_points(Problem& p, const std::vector<double>& angles, const Field& obstacle) {
+void append_rim_points(Problem& p, const std::vector<double>& angles) {
   const int first = p.sampling.size();
-  append_rim_points(p.grid, p.spec.edge, angles, p.sampling);
-  sample_obstacle(p, obstacle, first);
+  append_rim_points(p.grid, p.scene.edge, angles, p.sampling);
+  sample_obstacle(p, p.scene.obstacle, first);
   p.M = sampling_mass(p.grid, p.sampling);
 }
 
-Problem make_problem(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load) {
-  Problem p = make_samples(g, spec, obstacle);
+Problem make_problem(const Scene& s, const Grid& g, const SamplingSpec& spec) {
+  Problem p = make_samples(s, g, spec);
   p.K = assemble_matrix(g, bfs_stiffness(g.h));
   p.M = sampling_mass(g, p.sampling);
-  p.F = assemble_load(g, load, "load");
+  p.F = assemble_load(g, s.load, "load");
   return p;
 }
 

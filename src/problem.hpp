@@ -6,43 +6,45 @@
 
 #include "assemble.hpp"
 #include "sampling.hpp"
+#include "scene.hpp"
 
 namespace plate {
 
-// Which sampling, and for the Edge kinds the obstacle's edge curve.
+// Which sampling; the Edge kinds sample the scene's edge curve, with rows at points or averaged
+// against B-splines.
 struct SamplingSpec {
   SamplingKind kind = SamplingKind::Nodes;
-  EdgeCurve edge;
   EdgeRows rows;  // edge rows at points, or averaged against B-splines (make_sampling)
   SamplingSpec() = default;
-  SamplingSpec(SamplingKind k, EdgeCurve e = {}, EdgeRows r = {}) : kind(k), edge(std::move(e)), rows(r) {}
+  SamplingSpec(SamplingKind k, EdgeRows r = {}) : kind(k), rows(r) {}
 };
 
 struct Problem {
-  Grid grid;
+  Grid grid;          // covers the scene's rectangle, or the part of it that its mirror lines leave
   Sampling sampling;
   VectorXd phi;  // obstacle at the sample points; -inf where there is no constraint
   SpMat K;       // (Lap u, Lap v)
   SpMat M;       // S^T W S
   VectorXd F;    // (f, u)
   SamplingSpec spec;  // how `sampling` was made, so a coarser grid can be sampled alike
+  Scene scene;        // what the problem discretises
 };
 
-// Throws std::invalid_argument (naming "obstacle" or "load") for NaN or +inf values, and for an
-// obstacle that is not below zero on the boundary (then no clamped plate can satisfy w >= phi).
-Problem make_problem(const Grid& g, const SamplingSpec& spec, const Field& obstacle, const Field& load);
+// The scene on the grid g (the whole rectangle, or a part of it: mirror.hpp), sampled as `spec`
+// says. Throws std::invalid_argument (naming "obstacle" or "load") for NaN or +inf values, for an
+// obstacle that is not below zero on the boundary (then no clamped plate can satisfy w >= phi), and
+// for a grid that does not cover the scene's rectangle.
+Problem make_problem(const Scene& s, const Grid& g, const SamplingSpec& spec);
 // The grid, its sampling and the obstacle at the samples, without K, M and F: what the reports of
 // a solve on part of the plate read on the whole (mirror.hpp). Validates as make_problem does.
-Problem make_samples(const Grid& g, const SamplingSpec& spec, const Field& obstacle);
-// The same without an edge curve.
-Problem make_problem(const Grid& g, SamplingKind kind, const Field& obstacle, const Field& load);
+Problem make_samples(const Scene& s, const Grid& g, const SamplingSpec& spec);
 
 // The rows on p's circle laid out anew for a contact (rim_rows.hpp, D28): the sampling and the
 // obstacle at its samples remade; K and F kept; M remade.
-void lay_out_rim(Problem& p, const RimLayout& layout, const Field& obstacle);
+void lay_out_rim(Problem& p, const RimLayout& layout);
 // Point rows appended at `angles` of p's circle (sampling.hpp's append_rim_points), the obstacle
 // read at each, M remade.
-void append_rim_points(Problem& p, const std::vector<double>& angles, const Field& obstacle);
+void append_rim_points(Problem& p, const std::vector<double>& angles);
 
 // The obstacle at a point (x, y) of its edge curve with normal (nx, ny): the largest value on the
 // curve and a hair's breadth (1e-9 h) to either side, its upper semicontinuous envelope there.

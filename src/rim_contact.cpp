@@ -455,6 +455,16 @@ RimSymmetry plate_symmetry(double lx, double ly) {
 
 }  // namespace
 
+RimScene rim_scene(const Scene& scene) {
+  if (!scene.cylinder) throw std::invalid_argument("--obstacle: the rim-contact series models the cylinder only, not '" + scene.obstacle_text + "'");
+  if (!scene.uniform_load)
+    throw std::invalid_argument("--load: the rim-contact series models a uniform load, a number, not '" + scene.load_text + "'");
+  const Cylinder& c = *scene.cylinder;
+  const RimScene s{scene.lx, scene.ly, c.cx, c.cy, c.radius, c.height, *scene.uniform_load};
+  check(s);
+  return s;
+}
+
 void check(const RimScene& s) {
   auto need = [](bool ok, const char* name, double v, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("rim scene: ") + name + " " + what + " (got " + std::to_string(v) + ")");
@@ -519,8 +529,8 @@ PlateSeries solve_clamped_plate(double lx, double ly, double load, const RimSeri
 }
 // @end rim-clamped-plate
 
-RimSeries solve_rim_series(const RimScene& s, const RimSeriesOptions& o) {
-  check(s);
+RimSeries solve_rim_series(const Scene& scene, const RimSeriesOptions& o) {
+  const RimScene s = rim_scene(scene);
   check_options(o);
   RimSeries r;
   r.scene = s, r.options = o;
@@ -648,7 +658,7 @@ RimSeriesOptions rim_level(int level, bool extended) {
   return o;
 }
 
-RimAnswer rim_answer(const RimScene& s, int levels, bool extended, int first) {
+RimAnswer rim_answer(const Scene& s, int levels, bool extended, int first) {
   if (levels < 3) throw std::invalid_argument("rim_answer: levels must be >= 3 (a bar is claimed only once it has shrunk)");
   if (first < 0 || first > levels - 3) throw std::invalid_argument("rim_answer: first must leave three levels");
   RimAnswer a;

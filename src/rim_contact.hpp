@@ -7,15 +7,20 @@
 #include <vector>
 
 #include "contact.hpp"
+#include "scene.hpp"
 
 namespace plate {
 
-// Clamped rectangle [0, lx] x [0, ly], D = 1, uniform load f = `load` (> 0 pushes up), rigid
-// cylinder of radius a = `radius` and height R = `height` centred at (cx, cy): w >= R on the
-// closed disk, no constraint outside. The defaults are the paper's scene.
+// What the series reads of a scene: clamped rectangle [0, lx] x [0, ly], D = 1, uniform load
+// f = `load` (> 0 pushes up), rigid cylinder of radius a = `radius` and height R = `height` centred
+// at (cx, cy): w >= R on the closed disk, no constraint outside.
 struct RimScene {
-  double lx = 1, ly = 1, cx = 0.5, cy = 0.5, radius = 0.25, height = 0.0625, load = 0;
+  double lx = 0, ly = 0, cx = 0, cy = 0, radius = 0, height = 0, load = 0;
 };
+// The series' reading of a scene. Throws std::invalid_argument naming --obstacle or --load unless
+// the obstacle is a cylinder and the load uniform (the series models those alone), and as check()
+// does.
+RimScene rim_scene(const Scene& s);
 
 // Throws std::invalid_argument naming the parameter unless every number is finite, lx, ly,
 // radius and height are positive and the disk lies strictly inside the plate (a disk that meets
@@ -104,7 +109,7 @@ struct RimSeries {
 
 // Eq. (D17): Lap^2 w = f + q delta_rim, clamped, w = R on the rim; q and w from one least-squares
 // solve. Throws std::invalid_argument for a bad scene or options.
-RimSeries solve_rim_series(const RimScene& s, const RimSeriesOptions& o = {});
+RimSeries solve_rim_series(const Scene& s, const RimSeriesOptions& o = {});
 
 // Eq. (D14): the premise that makes the series the obstacle problem's solution: the cylinder
 // pushes everywhere on the rim (q >= 0) and the plate stays on or above it inside (w >= R).
@@ -138,6 +143,6 @@ struct RimAnswer {
   bool settled = false;
 };
 // `first`: the coarsest level solved (at least three levels are kept, for a bar that shrank).
-RimAnswer rim_answer(const RimScene& s, int levels = 6, bool extended = false, int first = 0);
+RimAnswer rim_answer(const Scene& s, int levels = 6, bool extended = false, int first = 0);
 
 }  // namespace plate

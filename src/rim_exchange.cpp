@@ -10,15 +10,15 @@ namespace plate {
 
 namespace {
 // The knot spacing of (D12) on p's circle, as an angle.
-double knot_angle(const Problem& p) { return 2 * M_PI / spline_knots(p.spec.edge.r, p.grid.h, p.spec.rows); }
-double cell_angle(const Problem& p) { return p.grid.h / p.spec.edge.r; }
+double knot_angle(const Problem& p) { return 2 * M_PI / spline_knots(p.scene.edge.r, p.grid.h, p.spec.rows); }
+double cell_angle(const Problem& p) { return p.grid.h / p.scene.edge.r; }
 // The lattice of the exchange: eight steps to each spacing of the points of edge_points.
 double exchange_step(size_t points) { return 2 * M_PI / (8.0 * points); }
 }  // namespace
 
 bool rim_follows_contact(const Problem& p) {
   return p.spec.rows.kind == EdgeRows::Kind::Auto && has_edge(p.spec.kind) &&
-         p.spec.edge.kind == EdgeCurve::Kind::Circle && p.sampling.edge_spline_degree > 0;
+         p.scene.edge.kind == EdgeCurve::Kind::Circle && p.sampling.edge_spline_degree > 0;
 }
 
 namespace {
@@ -44,12 +44,12 @@ ContactArcs rim_contact(const Problem& p, const VectorXd& w, const VectorXd& lam
 
 RimLayout rim_layout_for(const Problem& p, const ContactArcs& contact) {
   const double cell = cell_angle(p);
-  const std::vector<double> lattice = edge_points(p.spec.edge, p.grid.h).theta;
+  const std::vector<double> lattice = edge_points(p.scene.edge, p.grid.h).theta;
   return layout_for(contact, 2 * cell, 2 * cell, knot_angle(p), lattice, exchange_step(lattice.size()));
 }
 
 RimLayout rim_points_only(const Problem& p) {
-  const std::vector<double> lattice = edge_points(p.spec.edge, p.grid.h).theta;
+  const std::vector<double> lattice = edge_points(p.scene.edge, p.grid.h).theta;
   return layout_for(ContactArcs{}, 0, 0, knot_angle(p), lattice, exchange_step(lattice.size()));
 }
 
@@ -62,9 +62,10 @@ bool rim_layout_fits(const Problem& p, const VectorXd& w, const VectorXd& lambda
 }
 
 // @region rim-dips
-std::vector<double> rim_dips(const Problem& p, const VectorXd& w, const Field& obstacle, double slack) {
+std::vector<double> rim_dips(const Problem& p, const VectorXd& w, double slack) {
+  const Field& obstacle = p.scene.obstacle;
   const Grid& g = p.grid;
-  const EdgeCurve& c = p.spec.edge;
+  const EdgeCurve& c = p.scene.edge;
   const Sampling& s = p.sampling;
   auto point = [&](double t, double& x, double& y) { x = c.cx + c.r * std::cos(t), y = c.cy + c.r * std::sin(t); };
   auto gap = [&](double t) {

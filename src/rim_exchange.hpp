@@ -34,6 +34,6 @@ bool rim_layout_fits(const Problem& p, const VectorXd& w, const VectorXd& lambda
 // of w_h - phi over a lattice of angles (eight to each spacing of edge_points) that lie more than
 // `slack` below the obstacle, each where no point row is yet. A solve that adds these until there
 // are none ends with w_h >= phi at every lattice point off the arcs, whatever order it added them in.
-std::vector<double> rim_dips(const Problem& p, const VectorXd& w, const Field& obstacle, double slack);
+std::vector<double> rim_dips(const Problem& p, const VectorXd& w, double slack);
 
 }  // namespace plate

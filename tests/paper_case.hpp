@@ -1,5 +1,5 @@
-// The paper's experiment as a test fixture, read from reference/paper_numbers.csv: unit square,
-// f = 0, the obstacle's disk and height.
+// The paper's experiment as a test fixture: the scene of reference/paper_numbers.csv (published.hpp:
+// unit square, f = 0, the obstacle's disk and height) on a grid.
 #pragma once
 #include <cmath>
 #include <utility>
@@ -9,15 +9,10 @@
 #include "problem.hpp"
 
 namespace plate {
-inline const PaperScene& paper_scene() {
-  static const PaperScene scene = read_paper_scene(std::string(PLATE_SOURCE_DIR) + "/reference");
-  return scene;
-}
 
 // The paper's problem at obstacle height R (NaN: the paper's).
 inline Problem paper_problem(int n, SamplingKind kind, double R = NAN) {
-  const double height = std::isnan(R) ? paper_scene().height : R;
-  return make_problem(make_grid(n), kind, paper_scene().obstacle(height), [](double, double) { return 0.0; });
+  return make_problem(std::isnan(R) ? paper_scene() : paper_scene(R), make_grid(n), SamplingSpec{kind});
 }
 
 // A published constant of the clamped plate, from reference/plate_constants.csv.

@@ -33,7 +33,7 @@ TEST(ExactSolver, MeetsItsCertificateOnEveryCase) {
     Field obstacle, load;
   };
   const std::vector<Case> cases = {
-      {"paper's cylinder", paper_scene().obstacle(), kNoLoad},
+      {"paper's cylinder", paper_scene().obstacle, kNoLoad},
       {"flat support under a downward load", [](double, double) { return -1e-4; }, [](double, double) { return -1.0; }},
       {"no contact: obstacle far below", [](double, double) { return -1.0; }, [](double, double) { return -1.0; }},
       {"oscillating obstacle", [](double x, double y) { return 0.01 * std::sin(6 * M_PI * x) * std::sin(6 * M_PI * y) - 0.002; },
@@ -42,7 +42,7 @@ TEST(ExactSolver, MeetsItsCertificateOnEveryCase) {
   for (const auto& c : cases)
     for (int n : {4, 8, 16, 32}) {
       SCOPED_TRACE(std::string(c.name) + ", n = " + std::to_string(n));
-      const Problem p = make_problem(make_grid(n), SamplingKind::Nodes, c.obstacle, c.load);
+      const Problem p = make_problem(field_scene(make_grid(n).whole_lx(), make_grid(n).whole_ly(), c.obstacle, c.load), make_grid(n), SamplingSpec{SamplingKind::Nodes});
       const ExactResult r = certified(p);
       for (int q = 0; q < p.phi.size(); ++q) {  // the certificate's claims, checked one by one
         EXPECT_GE(r.w[4 * q], p.phi[q] - 1e-12);
@@ -75,7 +75,7 @@ TEST(ExactSolver, PenaltySolutionsApproachItLinearlyInEps) {
 
 TEST(ExactSolver, IsPositivelyHomogeneousInRAndSymmetric) {
   const ExactResult r1 = certified(paper_problem(16, SamplingKind::Nodes));
-  const ExactResult r2 = certified(paper_problem(16, SamplingKind::Nodes, 2 * paper_scene().height));
+  const ExactResult r2 = certified(paper_problem(16, SamplingKind::Nodes, 2 * paper_scene().cylinder->height));
   EXPECT_LE(max_nodal_abs(r2.w - 2 * r1.w), 1e-14 * max_nodal_abs(r2.w));
   EXPECT_EQ(r1.active, r2.active);
   EXPECT_LE(asymmetry(make_grid(16), r1.w), 1e-13 * max_nodal_abs(r1.w));
@@ -83,10 +83,10 @@ TEST(ExactSolver, IsPositivelyHomogeneousInRAndSymmetric) {
 
 TEST(ExactSolver, GridSequencingChangesTheWorkNotTheAnswer) {
   const Grid g = make_grid(64);
-  const Field phi = paper_scene().obstacle();
   ExactOptions cold;
   cold.nested = false;
-  const ExactResult a = solve_exact(g, phi, kNoLoad, cold), b = solve_exact(g, phi, kNoLoad, ExactOptions{});
+  Problem p = make_problem(paper_scene(), g, SamplingSpec{SamplingKind::Nodes});
+  const ExactResult a = solve_sequenced(p, cold), b = solve_sequenced(p, ExactOptions{});
   ASSERT_TRUE(a.converged && b.converged) << a.message << b.message;
   EXPECT_EQ(a.active, b.active);
   // Different factorisations of a matrix with condition number ~ h^-4: agreement to round-off times that.

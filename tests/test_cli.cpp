@@ -257,20 +257,21 @@ TEST(Cli, AnswerScalesWithUnitsAndHeightForEveryScheme) {
   }
 }
 
-// `plate` runs from anywhere, so its defaults are spelled in the program; this holds them to the one
-// source of the paper's numbers, reference/paper_numbers.csv.
+// `plate` runs from anywhere, so its defaults are baked in at build time from the one source of
+// the paper's numbers, reference/paper_numbers.csv; this reads that file now and holds them to it.
 TEST(Cli, DefaultsAreThePapersProblem) {
   const std::string json = temp_path("defaults_" + std::to_string(getpid()) + ".json");
   ASSERT_EQ(run_plate("-q --json " + json).status, 0);
   const auto config = read_json(json).value("config", nlohmann::json::object());
-  const plate::PaperScene& s = plate::paper_scene();
+  const auto numbers = plate::read_paper_numbers(std::string(PLATE_SOURCE_DIR) + "/reference/paper_numbers.csv");
   ASSERT_TRUE(config.contains("--obstacle-height")) << config.dump();
-  EXPECT_EQ(std::stod(config["--obstacle-height"].get<std::string>()), s.height);
-  EXPECT_EQ(std::stod(config["--radius"].get<std::string>()), s.radius);
+  EXPECT_EQ(std::stod(config["--obstacle-height"].get<std::string>()), plate::published(numbers, "obstacle_height"));
+  EXPECT_EQ(std::stod(config["--radius"].get<std::string>()), plate::published(numbers, "obstacle_radius"));
   const std::string centre = config["--centre"].get<std::string>();
-  EXPECT_EQ(std::stod(centre.substr(0, centre.find(','))), s.cx);
-  EXPECT_EQ(std::stod(centre.substr(centre.find(',') + 1)), s.cy);
-  EXPECT_EQ(std::stoi(config["--cells"].get<std::string>()), s.cells);
+  EXPECT_EQ(std::stod(centre.substr(0, centre.find(','))), plate::published(numbers, "obstacle_cx"));
+  EXPECT_EQ(std::stod(centre.substr(centre.find(',') + 1)), plate::published(numbers, "obstacle_cy"));
+  EXPECT_EQ(std::stoi(config["--cells"].get<std::string>()), std::lround(1 / plate::published(numbers, "h")));
+  EXPECT_EQ(config["--load"].get<std::string>(), "0");
   std::filesystem::remove(json);
 }
 
@@ -285,7 +286,7 @@ TEST(Cli, ThePapersLinearRunsAreRefusedAndItsNonlinearRunsCertified) {
       // plate's --tol is relative to the size of the answer, the obstacle's height here.
       std::ostringstream tol;
       tol.precision(17);
-      tol << row.tolerance / plate::paper_scene().height;
+      tol << row.tolerance / plate::paper_scene().cylinder->height;
       const std::string args = "-q -n 4 --sampling " + std::string(sampling) + " --tol " + tol.str();
       const PlateRun linear = run_plate(args + " --scheme linear");
       EXPECT_EQ(linear.status, 3) << args;

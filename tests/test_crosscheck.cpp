@@ -35,7 +35,7 @@ std::string work_dir() {
 std::vector<CheckValues> freefem_runs(const std::string& geo, const std::vector<int>& levels,
                                       const std::vector<std::pair<double, double>>& points, const std::string& extra = "",
                                       double disk_radius = 0) {
-  const PaperScene& s = paper_scene();
+  const Scene s = paper_scene();
   const std::string dir = work_dir(), pts = dir + "/points.txt";
   write_points(pts, points);
   std::vector<CheckValues> runs;
@@ -45,7 +45,7 @@ std::vector<CheckValues> freefem_runs(const std::string& geo, const std::vector<
     if (disk_radius > 0) numbers.push_back({"a", disk_radius});
     gmsh_mesh(kRef + "/" + geo, numbers, msh);
     const std::string args = scene_args(s, pts) + " " + extra;
-    runs.push_back(freefem_values(run_freefem(kEdp, msh, args, msh + ".json"), 4 * n, s.radius));
+    runs.push_back(freefem_values(run_freefem(kEdp, msh, args, msh + ".json"), 4 * n, s.cylinder->radius));
     EXPECT_TRUE(runs.back().certified) << geo << ", n = " << n;
   }
   return runs;
@@ -70,11 +70,11 @@ Extrapolation fit_ours(const std::vector<CheckValues>& runs, const std::vector<d
 }  // namespace
 
 TEST(CrossCode, FreeFemAndThisCodeAgreeOnThePapersSquareToTheTargets) {
-  const PaperScene& s = paper_scene();
+  const Scene s = paper_scene();
   const auto ff = freefem_runs("square_with_circle.geo", {2, 4, 8, 16}, check_points());
   std::vector<CheckValues> ours;
   for (int n : {64, 128, 256, 512}) {
-    ours.push_back(solve_ours(n, SamplingSpec{SamplingKind::Edge, s.rim()}, s.obstacle(), s.rim()));
+    ours.push_back(solve_ours(s, n, SamplingSpec{SamplingKind::Edge}));
     ASSERT_TRUE(ours.back().certified) << "n = " << n;
   }
   const struct {
@@ -101,9 +101,9 @@ TEST(CrossCode, FreeFemAndThisCodeAgreeOnThePapersSquareToTheTargets) {
 }
 
 TEST(CrossCode, FreeFemReproducesTheDiskOnAFlatPunch) {
-  const PaperScene& s = paper_scene();
-  const DiskPunch exact{0.5, s.radius, s.height};
-  const auto ff = freefem_runs("disk_with_punch.geo", {1, 2, 4, 8}, {{s.cx, s.cy}}, "", exact.a);
+  const Scene s = paper_scene();
+  const DiskPunch exact{0.5, s.cylinder->radius, s.cylinder->height};
+  const auto ff = freefem_runs("disk_with_punch.geo", {1, 2, 4, 8}, {{s.cylinder->cx, s.cylinder->cy}}, "", exact.a);
   const Extrapolation w = fit_freefem(ff, values_at(ff, 0)), f = fit_freefem(ff, values_of(ff, &CheckValues::force));
   std::printf("  w(0): FreeFEM %.9g +- %.1e, closed form %.9g; force: FreeFEM %.7g +- %.1e, closed form %.7g\n", w.limit,
               w.bar, exact.centre(), f.limit, f.bar, exact.total_force());

@@ -25,10 +25,9 @@ struct SplineRun {
   LineForce line;
 };
 SplineRun solve(int n, const EdgeRows& splines, double R = NAN) {
-  const PaperScene& s = paper_scene();
-  const double height = std::isnan(R) ? s.height : R;
-  SplineRun r{make_problem(make_grid(n), SamplingSpec{SamplingKind::Edge, s.rim(), splines}, s.obstacle(height), kNoLoad), {}, {}};
-  r.x = solve_exact(r.p, s.obstacle(height), kNoLoad, ExactOptions{});
+  const Scene s = std::isnan(R) ? paper_scene() : paper_scene(R);
+  SplineRun r{make_problem(s, make_grid(n), SamplingSpec{SamplingKind::Edge, splines}), {}, {}};
+  r.x = solve_sequenced(r.p, ExactOptions{});
   EXPECT_TRUE(r.x.converged) << r.x.message;
   EXPECT_LE(r.x.certificate.worst(), 1e-10);
   r.line = line_force(r.p, r.x.lambda);
@@ -67,18 +66,18 @@ TEST(EdgeSplines, RowsAverageTheDeflectionAgainstTheirSplines) {
   const Sampling& s = r.p.sampling;
   const int m = s.edge_size();
   ASSERT_GT(m, 0);
-  EXPECT_NEAR(s.weights.tail(m).sum(), 2 * M_PI * paper_scene().radius, 1e-12);
+  EXPECT_NEAR(s.weights.tail(m).sum(), 2 * M_PI * paper_scene().cylinder->radius, 1e-12);
   VectorXd w = VectorXd::Zero(r.p.grid.unknowns());
   for (int j = 1; j < r.p.grid.ny; ++j)
     for (int i = 1; i < r.p.grid.nx; ++i) w[r.p.grid.dof(i, j, kW)] = r.p.grid.x(i) - 0.5, w[r.p.grid.dof(i, j, kWx)] = 1;
   const VectorXd Sw = s.S * w;
-  const double delta = 2 * M_PI / m, sinc = std::sin(delta / 2) / (delta / 2), rad = paper_scene().radius;
+  const double delta = 2 * M_PI / m, sinc = std::sin(delta / 2) / (delta / 2), rad = paper_scene().cylinder->radius;
   for (int k = 0; k < m; ++k)
     EXPECT_NEAR(Sw[s.edge_begin + k], rad * std::cos(s.edge.theta[k]) * std::pow(sinc, kDefault.degree + 1), 1e-12) << "knot " << k;
 }
 
 TEST(EdgeSplines, SymmetricUnderTheSquareAndHomogeneousInR) {
-  const SplineRun a = solve(32, kDefault), b = solve(32, kDefault, 2 * paper_scene().height);
+  const SplineRun a = solve(32, kDefault), b = solve(32, kDefault, 2 * paper_scene().cylinder->height);
   const size_t m = a.line.q.size(), quarter = m / 4;
   for (size_t k = 0; k < m; ++k) {
     EXPECT_NEAR(a.line.q[k], a.line.q[(k + quarter) % m], 1e-9 * a.line.max);  // a quarter turn
@@ -91,15 +90,15 @@ TEST(EdgeSplines, SymmetricUnderTheSquareAndHomogeneousInR) {
 // the spline rows' function converges: at an order of at least one from n = 32 to 128, within 1e-3
 // of the mean on n = 128, and the plate dips below the rim between the rows by less on each finer grid.
 TEST(EdgeSplines, PointwiseLineLoadConvergesToTheSeries) {
-  const RimAnswer series = rim_answer(RimScene{});
+  const RimAnswer series = rim_answer(paper_scene());
   std::vector<double> error, dip;
   for (int n : {32, 64, 128}) {
     const SplineRun r = solve(n, kDefault);
     error.push_back(pointwise_error(r.line, series.finest));
     double d = 0;
     for (int k = 0; k < 2048; ++k) {
-      const double t = 2 * M_PI * k / 2048, rad = paper_scene().radius;
-      d = std::max(d, paper_scene().height - evaluate(r.p.grid, r.x.w, 0.5 + rad * std::cos(t), 0.5 + rad * std::sin(t)).w);
+      const double t = 2 * M_PI * k / 2048, rad = paper_scene().cylinder->radius;
+      d = std::max(d, paper_scene().cylinder->height - evaluate(r.p.grid, r.x.w, 0.5 + rad * std::cos(t), 0.5 + rad * std::sin(t)).w);
     }
     dip.push_back(d);
     std::printf("  n = %d: %d spline rows, pointwise error %.2e of the mean, largest dip below the rim %.2e\n", n,

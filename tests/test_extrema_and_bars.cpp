@@ -11,6 +11,7 @@
 
 #include "error_bar.hpp"
 #include "extrema.hpp"
+#include "published.hpp"
 #include "rim_contact.hpp"
 #include "run_program.hpp"
 #include "scratch.hpp"
@@ -78,60 +79,4 @@ TEST(ErrorBar, HoldsTheErrorOfASteadySequenceAndSaysWhenItIsNotSteady) {
   EXPECT_EQ(swinging.basis, "largest of the last two differences");
   EXPECT_NEAR(swinging.bar, 0.05, 1e-12);
   EXPECT_EQ(error_bar({1.0}).basis, "none");
-}
-
-namespace {
-std::string temp_path(const std::string& name) {
-  static const Scratch scratch("bars");
-  return scratch.path(name);
-}
-nlohmann::json run_json(const std::string& args) {
-  const std::string json = temp_path("run.json");
-  const Captured c = run_captured(std::string(PLATE_EXE) + " -q " + args + " --json " + json);
-  EXPECT_EQ(c.status, 0) << args << "\n" << c.output;
-  std::ifstream in(json);
-  return nlohmann::json::parse(in, nullptr, false);
-}
-}  // namespace
-
-// `plate` on the paper's scene, an off-centre cylinder and a 1.25 x 1 plate with the cylinder off
-// both centre lines, n = 128 (160 for the 1.25 plate): max w and the total force each carry a bar
-// from the run's own grids that holds its distance from the series' answer and is at most ten times
-// it; max w is the field's peak, within 1e-7 (absolute) of the series' even where it lies between
-// nodes (the nodal maximum of the off-centre scene is 3.7e-6 short). The JSON says what each bound
-// is about.
-TEST(ErrorBar, PlateBarsHoldTheDistanceToTheSeries) {
-  struct Case {
-    std::string args;
-    RimScene scene;
-  };
-  const Case cases[] = {{"-n 128", RimScene{}},
-                        {"-n 128 --centre 0.45,0.5", RimScene{1, 1, 0.45, 0.5}},
-                        {"-n 160 --lx 1.25 --centre 0.6,0.45", RimScene{1.25, 1, 0.6, 0.45}}};
-  for (const Case& c : cases) {
-    const nlohmann::json j = run_json(c.args);
-    const RimAnswer series = rim_answer(c.scene, 6, false, 3);
-    ASSERT_TRUE(series.premise.holds) << c.args;
-    const RimPeak peak = series.finest.max_w();
-    const double force = series.finest.total_force();
-    EXPECT_NEAR(j["max_w"].get<double>(), peak.w, 1e-7) << c.args;
-    EXPECT_NEAR(j["max_w_at"][0].get<double>(), peak.x, 1e-4) << c.args;
-    for (const auto& [key, field, truth] : {std::tuple{"max w", "max_w", peak.w}, {"total contact force", "total_contact_force", force}}) {
-      const double err = std::abs(j[field].get<double>() - truth), bar = j["error_bars"][key]["bar"].get<double>();
-      std::printf("%s %s: error %.2e, bar %.2e (%s)\n", c.args.c_str(), key, err, bar, j["error_bars"][key]["basis"].get<std::string>().c_str());
-      EXPECT_GE(bar, err) << c.args << " " << key;
-      EXPECT_LE(bar, 10 * err) << c.args << " " << key;
-    }
-    EXPECT_NE(j["certificate_is"].get<std::string>().find("discrete"), std::string::npos);
-    EXPECT_NE(j["error_bar_is"].get<std::string>().find("continuum"), std::string::npos);
-  }
-}
-
-// On a scene where the plate lifts off part of the rim (no series to hold it to), the bar from the
-// four grids n/8 ... n holds the distance to the answer of a grid four times finer.
-TEST(ErrorBar, LiftOffBarHoldsAFinerAnswer) {
-  const nlohmann::json coarse = run_json("-n 96 --lx 1.5 --centre 0.75,0.5"), fine = run_json("-n 384 --lx 1.5 --centre 0.75,0.5 --estimate off");
-  const nlohmann::json& b = coarse["error_bars"]["max w"];
-  EXPECT_GE(b["bar"].get<double>(), std::abs(coarse["max_w"].get<double>() - fine["max_w"].get<double>()));
-  EXPECT_EQ(coarse["error_bars"]["grids"].size(), 4u);
 }

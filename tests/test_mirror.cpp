@@ -24,8 +24,8 @@ struct Both {
 };
 
 // The scene solved on the whole plate and on the part its mirrors leave; both certified.
-Both solve_both(const Grid& g, const SamplingSpec& spec, const Field& phi, const Field& f) {
-  Both b{solve_exact_scene(g, spec, phi, f, ExactOptions{}, false), solve_exact_scene(g, spec, phi, f, ExactOptions{}, true)};
+Both solve_both(const Scene& s, int n, const SamplingSpec& spec) {
+  Both b{solve_exact_scene(s, n, spec, ExactOptions{}, false), solve_exact_scene(s, n, spec, ExactOptions{}, true)};
   EXPECT_TRUE(b.whole.result.converged) << b.whole.result.message;
   EXPECT_TRUE(b.part.result.converged) << b.part.result.message;
   EXPECT_FALSE(b.whole.mirrors.any());
@@ -67,10 +67,9 @@ void expect_same(const Both& b, double tol, double tol_force) {
 // The paper's scene has both mirror lines: a quarter, the same answer to the refinement's precision,
 // for the default edge rows, point rows and Gauss points.
 TEST(Mirror, QuarterAndWholePlateGiveOneAnswerOnThePapersScene) {
-  const PaperScene& s = paper_scene();
-  for (const SamplingSpec& spec : {SamplingSpec{SamplingKind::Edge, s.rim()}, SamplingSpec{SamplingKind::Edge, s.rim(), EdgeRows::points()},
+  for (const SamplingSpec& spec : {SamplingSpec{SamplingKind::Edge}, SamplingSpec{SamplingKind::Edge, EdgeRows::points()},
                                    SamplingSpec{SamplingKind::Gauss}}) {
-    const Both b = solve_both(make_grid(64), spec, s.obstacle(), kNoLoad);
+    const Both b = solve_both(paper_scene(), 64, spec);
     EXPECT_TRUE(b.part.mirrors.x && b.part.mirrors.y) << describe(b.part.mirrors);
     EXPECT_EQ(b.part.solved.grid.unknowns(), 4 * 32 * 32);
     expect_same(b, 1e-10, 1e-10);
@@ -85,9 +84,7 @@ TEST(Mirror, QuarterAndWholePlateGiveOneAnswerOnThePapersScene) {
 
 // A rectangle with a centred cylinder: the two mirrors of a rectangle, not the square's eight.
 TEST(Mirror, RectangleWithACentredCylinderIsSolvedOnAQuarter) {
-  const Grid g = make_grid(48, 1.5, 1.0);
-  const Field phi = cylinder(0.75, 0.5, 0.3, 0.05);
-  const Both b = solve_both(g, SamplingSpec{SamplingKind::Edge, circle_edge(0.75, 0.5, 0.3)}, phi, kNoLoad);
+  const Both b = solve_both(cylinder_scene(1.5, 1.0, Cylinder{0.75, 0.5, 0.3, 0.05}), 48, SamplingSpec{SamplingKind::Edge});
   EXPECT_TRUE(b.part.mirrors.x && b.part.mirrors.y);
   // The plate lifts off part of the rim here: rows laid out for the contact (D28), the same layout on
   // the quarter and on the whole plate.
@@ -99,10 +96,9 @@ TEST(Mirror, RectangleWithACentredCylinderIsSolvedOnAQuarter) {
 // An expression obstacle and load, symmetric in both lines, with nodal sampling (the primal-dual
 // solver, not refined: agreement to its round-off on this grid) and Gauss points.
 TEST(Mirror, SymmetricExpressionObstacleIsSolvedOnAQuarter) {
-  const Field phi = expression("--obstacle", "0.02 - 2*((x-0.5)^2 + (y-0.5)^2)");
-  const Field load = expression("--load", "-1 - x*(1-x)");
+  const Scene scene = expression_scene(1, 1, "0.02 - 2*((x-0.5)^2 + (y-0.5)^2)", "-1 - x*(1-x)");
   for (SamplingKind kind : {SamplingKind::Nodes, SamplingKind::Gauss}) {
-    const Both b = solve_both(make_grid(16), SamplingSpec{kind}, phi, load);
+    const Both b = solve_both(scene, 16, SamplingSpec{kind});
     EXPECT_TRUE(b.part.mirrors.x && b.part.mirrors.y) << to_string(kind);
     expect_same(b, 1e-11, 1e-11);
   }
@@ -110,14 +106,12 @@ TEST(Mirror, SymmetricExpressionObstacleIsSolvedOnAQuarter) {
 
 // A cylinder moved along x keeps the mirror y = 1/2 only: a half. Moved off both lines: the whole plate.
 TEST(Mirror, APartialSymmetryGivesAHalfAndNoneTheWholePlate) {
-  const Field phi_half = cylinder(0.4, 0.5, 0.25, 0.0625);
-  const Both b = solve_both(make_grid(32), SamplingSpec{SamplingKind::Edge, circle_edge(0.4, 0.5, 0.25)}, phi_half, kNoLoad);
+  const Both b = solve_both(cylinder_scene(1, 1, Cylinder{0.4, 0.5, 0.25, 0.0625}), 32, SamplingSpec{SamplingKind::Edge});
   EXPECT_FALSE(b.part.mirrors.x);
   EXPECT_TRUE(b.part.mirrors.y);
   EXPECT_EQ(b.part.solved.grid.unknowns(), 4 * 31 * 16);
   expect_same(b, 1e-10, 1e-10);
-  const Field phi_off = cylinder(0.4, 0.55, 0.25, 0.0625);
-  const SceneSolution off = solve_exact_scene(make_grid(32), SamplingSpec{SamplingKind::Edge, circle_edge(0.4, 0.55, 0.25)}, phi_off, kNoLoad,
+  const SceneSolution off = solve_exact_scene(cylinder_scene(1, 1, Cylinder{0.4, 0.55, 0.25, 0.0625}), 32, SamplingSpec{SamplingKind::Edge},
                                               ExactOptions{});
   EXPECT_FALSE(off.mirrors.any());
   EXPECT_FALSE(off.unfolded.has_value());
@@ -126,23 +120,22 @@ TEST(Mirror, APartialSymmetryGivesAHalfAndNoneTheWholePlate) {
 // What breaks a mirror: an odd number of cells (the line is not a grid line), a load that is not
 // symmetric, an obstacle that differs from its image by more than round-off.
 TEST(Mirror, MirrorsAreFoundOnlyWhereTheSceneHasThem) {
-  const PaperScene& s = paper_scene();
-  const SamplingSpec edge{SamplingKind::Edge, s.rim()};
-  EXPECT_FALSE(find_mirrors(make_grid(15), edge, s.obstacle(), kNoLoad).any());
-  const Mirrors tilted = find_mirrors(make_grid(16), edge, s.obstacle(), [](double x, double) { return x; });
+  const Scene s = paper_scene();
+  const SamplingSpec edge{SamplingKind::Edge};
+  EXPECT_FALSE(find_mirrors(s, make_grid(15), edge).any());
+  const Mirrors tilted = find_mirrors(with_load(s, "x"), make_grid(16), edge);
   EXPECT_FALSE(tilted.x);
   EXPECT_TRUE(tilted.y);
   const Field bumpy = [](double x, double y) { return 0.01 - (x - 0.5) * (x - 0.5) - (y - 0.5) * (y - 0.5) + 1e-9 * x; };
-  EXPECT_FALSE(find_mirrors(make_grid(16), SamplingSpec{SamplingKind::Nodes}, bumpy, kNoLoad).x);
+  EXPECT_FALSE(find_mirrors(field_scene(1, 1, bumpy, kNoLoad), make_grid(16), SamplingSpec{SamplingKind::Nodes}).x);
   const Field rounded = [](double x, double y) { return 0.01 - (x - 0.5) * (x - 0.5) - (y - 0.5) * (y - 0.5) + 1e-16 * x; };
-  EXPECT_TRUE(find_mirrors(make_grid(16), SamplingSpec{SamplingKind::Nodes}, rounded, kNoLoad).x);
+  EXPECT_TRUE(find_mirrors(field_scene(1, 1, rounded, kNoLoad), make_grid(16), SamplingSpec{SamplingKind::Nodes}).x);
 }
 
 // A point of the whole plate is evaluated on the part by reflection, slopes across the line
 // changing sign: the unfolded plate and the part agree everywhere.
 TEST(Mirror, EvaluationBeyondTheMirrorLineReflects) {
-  const PaperScene& s = paper_scene();
-  const SceneSolution x = solve_exact_scene(make_grid(32), SamplingSpec{SamplingKind::Edge, s.rim()}, s.obstacle(), kNoLoad, ExactOptions{});
+  const SceneSolution x = solve_exact_scene(paper_scene(), 32, SamplingSpec{SamplingKind::Edge}, ExactOptions{});
   ASSERT_TRUE(x.mirrors.x && x.mirrors.y);
   for (const auto& [px, py] : {std::pair{0.7, 0.3}, {0.2, 0.9}, {0.81, 0.77}, {0.5, 0.6}}) {
     const PointValues a = evaluate(x.whole().grid, x.result.w, px, py), b = evaluate(x.solved.grid, x.part_w, px, py);
@@ -156,10 +149,10 @@ TEST(Mirror, EvaluationBeyondTheMirrorLineReflects) {
 // Green's function at the centre by four and the residual's norm by one half, so a bound read at the
 // wrong node of the quarter, or with the wrong weights, shows here.
 TEST(Mirror, PenaltyErrorBoundOnTheQuarterIsTheWholePlates) {
-  const PaperScene& s = paper_scene();
+  const Scene s = paper_scene();
   const Grid whole = make_grid(16), quarter = part_of(whole, Mirrors{true, true});
   for (const SamplingKind kind : {SamplingKind::Nodes, SamplingKind::Gauss}) {
-    const Problem pw = make_problem(whole, kind, s.obstacle(), kNoLoad), pq = make_problem(quarter, kind, s.obstacle(), kNoLoad);
+    const Problem pw = make_problem(s, whole, SamplingSpec{kind}), pq = make_problem(s, quarter, SamplingSpec{kind});
     Cholesky cw, cq;
     cw.analyze(pw.K);
     cq.analyze(pq.K);
@@ -168,7 +161,7 @@ TEST(Mirror, PenaltyErrorBoundOnTheQuarterIsTheWholePlates) {
       VectorXd v = VectorXd::Zero(g.unknowns());
       for (int i = 0; i <= g.nx; ++i)
         for (int j = 0; j <= g.ny; ++j)
-          if (const int d = g.dof(i, j, kW); d >= 0) v[d] = 0.5 * s.height;
+          if (const int d = g.dof(i, j, kW); d >= 0) v[d] = 0.5 * s.cylinder->height;
       return v;
     };
     const VectorXd w = lifted(pw.grid), wq = lifted(pq.grid);
@@ -186,11 +179,11 @@ TEST(Mirror, AnAsymmetryIsSeenWhereTheObstacleIsSmallEvenIfItIsLargeElsewhere) {
     const double r2 = (x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5);
     return 0.06 - 1000 * r2 * r2 + (r2 < 0.01 ? 1e-10 * x : 0.0);
   };
-  EXPECT_FALSE(find_mirrors(make_grid(16), SamplingSpec{SamplingKind::Nodes}, deep, kNoLoad).x);
+  EXPECT_FALSE(find_mirrors(field_scene(1, 1, deep, kNoLoad), make_grid(16), SamplingSpec{SamplingKind::Nodes}).x);
   const Field deep_symmetric = [](double x, double y) {
     const double r2 = (x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5);
     return 0.06 - 1000 * r2 * r2;
   };
-  const Mirrors both = find_mirrors(make_grid(16), SamplingSpec{SamplingKind::Nodes}, deep_symmetric, kNoLoad);
+  const Mirrors both = find_mirrors(field_scene(1, 1, deep_symmetric, kNoLoad), make_grid(16), SamplingSpec{SamplingKind::Nodes});
   EXPECT_TRUE(both.x && both.y);
 }

@@ -20,8 +20,8 @@ VectorXd penalised(const Problem& p, double eps = 1e-6) {
 TEST(Invariance, DeflectionIsPositivelyHomogeneousInR) {
   for (SamplingKind kind : {SamplingKind::Gauss, SamplingKind::Nodes}) {
     const VectorXd w1 = penalised(paper_problem(8, kind));
-    const VectorXd w2 = penalised(paper_problem(8, kind, 2 * paper_scene().height));
-    const VectorXd w3 = penalised(paper_problem(8, kind, 3 * paper_scene().height));
+    const VectorXd w2 = penalised(paper_problem(8, kind, 2 * paper_scene().cylinder->height));
+    const VectorXd w3 = penalised(paper_problem(8, kind, 3 * paper_scene().cylinder->height));
     // Doubling is exact in binary floating point, so the whole computation doubles exactly.
     EXPECT_LE(max_nodal_abs(w2 - 2 * w1), 1e-15 * max_nodal_abs(w2)) << to_string(kind);
     EXPECT_LE(max_nodal_abs(w3 - 3 * w1), 1e-13 * max_nodal_abs(w3)) << to_string(kind);
@@ -36,8 +36,7 @@ TEST(Invariance, DeflectionHasTheEightSymmetriesOfTheSquare) {
   }
   // The check sees asymmetry when there is some: a load f = x tilts the plate.
   const Grid g = make_grid(8);
-  const Problem tilted = make_problem(g, SamplingKind::Nodes, paper_scene().obstacle(),
-                                      [](double x, double) { return 10 * x; });
+  const Problem tilted = make_problem(field_scene(g.whole_lx(), g.whole_ly(), paper_scene().obstacle, [](double x, double) { return 10 * x; }), g, SamplingSpec{SamplingKind::Nodes});
   const VectorXd w = penalised(tilted);
   EXPECT_GT(asymmetry(g, w), 1e-6 * max_nodal_abs(w));
 }

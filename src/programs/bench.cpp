@@ -49,11 +49,10 @@ struct Outcome {
 
 // The child's work. Times exclude the assembly of the fine-grid problem, which every solver
 // shares and which is timed on its own.
-std::map<std::string, double> run_job(const Job& job, const Field& obstacle, std::vector<double>& nodal) {
-  const Field no_load = [](double, double) { return 0.0; };
+std::map<std::string, double> run_job(const Job& job, const Scene& scene, std::vector<double>& nodal) {
   std::map<std::string, double> v;
   const auto t0 = Clock::now();
-  Problem p = make_problem(make_grid(job.n), SamplingKind::Nodes, obstacle, no_load);
+  Problem p = make_problem(scene, make_grid(job.n), SamplingSpec{SamplingKind::Nodes});
   v["assemble_s"] = seconds_since(t0);
   v["unknowns"] = p.grid.unknowns();
   VectorXd w;
@@ -71,7 +70,7 @@ std::map<std::string, double> run_job(const Job& job, const Field& obstacle, std
     v["solve_s"] = seconds_since(t3);
     v["converged"] = 1;
   } else if (job.solver == "exact") {
-    const ExactResult r = solve_exact(p, obstacle, no_load, ExactOptions{});
+    const ExactResult r = solve_sequenced(p, ExactOptions{});
     w = r.w;
     int its = 0, facts = 0;
     long cols = 0;
@@ -111,7 +110,7 @@ struct Peer {
 
 // Runs a job in a child process and collects its measurements and its peak resident memory. A
 // peer's child becomes the PETSc program itself, which writes the same file.
-Outcome run_in_child(const Job& job, const Field& obstacle, const std::filesystem::path& scratch, const Peer& peer) {
+Outcome run_in_child(const Job& job, const Scene& scene, const std::filesystem::path& scratch, const Peer& peer) {
   Outcome out{job, {}, {}, 0, false};
   const std::filesystem::path file = scratch / ("w_" + job.solver + "_" + std::to_string(job.n) + ".txt");
   std::cout.flush();
@@ -128,7 +127,7 @@ Outcome run_in_child(const Job& job, const Field& obstacle, const std::filesyste
     int status = kFailure;
     try {
       Measurements m;
-      m.v = run_job(job, obstacle, m.nodal);
+      m.v = run_job(job, scene, m.nodal);
       write_measurements(file, m);
       status = kSuccess;
     } catch (const std::exception& e) {
@@ -454,7 +453,7 @@ int main(int argc, char** argv) {
     // Read first, so that a missing continuum study stops the run before its half hour of solves.
     const auto lim = read_rim_answer(limits);
     const Continuum continuum{lim.at("max_w"), lim.at("max_w_bar")};
-    const Field obstacle = paper_scene(read_paper_numbers(paper_numbers)).obstacle();
+    const Scene scene = paper_scene();
     const std::filesystem::path scratch = std::filesystem::temp_directory_path() / ("plate_bench_" + std::to_string(getpid()));
     std::filesystem::create_directories(scratch);
     std::vector<Job> jobs;
@@ -476,7 +475,7 @@ int main(int argc, char** argv) {
       if (over_budget.count(series)) continue;
       std::cout << "bench: " << job.solver << " n = " << job.n << (job.tol > 0 ? " tol = " + fmt("%g", job.tol) : "")
                 << " ..." << std::flush;
-      outcomes.push_back(run_in_child(job, obstacle, scratch, peer));
+      outcomes.push_back(run_in_child(job, scene, scratch, peer));
       const Outcome& o = outcomes.back();
       std::cout << (o.ok ? fmt(" %.3g s", o.v.at("seconds")) + fmt(", peak %.0f MiB", o.peak_mib) : " FAILED") << "\n";
       if (!o.ok || budget_exempt(job.solver)) continue;

@@ -32,9 +32,9 @@ struct Variant {
   std::string name;
   SamplingSpec spec;
 };
-std::vector<Variant> variants(const PaperScene& scene) {
-  return {{"edge", SamplingSpec{SamplingKind::Edge, scene.rim()}},
-          {"edge-points", SamplingSpec{SamplingKind::Edge, scene.rim(), EdgeRows::points()}},
+std::vector<Variant> variants() {
+  return {{"edge", SamplingSpec{SamplingKind::Edge}},
+          {"edge-points", SamplingSpec{SamplingKind::Edge, EdgeRows::points()}},
           {"gauss", SamplingSpec{SamplingKind::Gauss}},
           {"nodes", SamplingSpec{SamplingKind::Nodes}}};
 }
@@ -70,16 +70,15 @@ const std::vector<Quantity> kQuantities = {
     {"max m12", "max_abs_m12", &Row::m12, &Row::noise_m12},
 };
 
-Row solve_one(const Variant& v, int n, const PaperScene& scene) {
-  const Field phi = scene.obstacle(), no_load = [](double, double) { return 0.0; };
+Row solve_one(const Variant& v, int n, const Scene& scene) {
   const auto t0 = Clock::now();
-  const SceneSolution x = solve_exact_scene(make_grid(n), v.spec, phi, no_load, ExactOptions{});
+  const SceneSolution x = solve_exact_scene(scene, n, v.spec, ExactOptions{});
   const Problem& p = x.whole();
   Row row;
   row.kind = v.name, row.n = n, row.unknowns = p.grid.unknowns(), row.samples = p.sampling.size();
   row.edge_points = p.sampling.edge_size();
   row.certified = x.result.converged;
-  const NodalFields f = nodal_fields(p, x.result.w, phi, x.result.lambda, kPoissonRatio);
+  const NodalFields f = nodal_fields(p, x.result.w, x.result.lambda, kPoissonRatio);
   int top = 0, twist = 0;  // the nodes of max w and of max |m12|
   for (int k = 0; k < f.size(); ++k) {
     if (f.w[k] > f.w[top]) top = k;
@@ -89,7 +88,7 @@ Row solve_one(const Variant& v, int n, const PaperScene& scene) {
   row.w_mid = evaluate(p.grid, x.result.w, 0.5, 0.125).w;
   row.w_diag = evaluate(p.grid, x.result.w, 0.25, 0.25).w;
   row.force = total_contact_force(p, x.result.lambda);
-  row.mean_line = row.force / (2 * M_PI * scene.radius);  // with f = 0 the whole push is on the rim
+  row.mean_line = row.force / (2 * M_PI * scene.cylinder->radius);  // with f = 0 the whole push is on the rim
   row.line = line_force(p, x.result.lambda);
   // q at 0 and pi/4: the spline's own value; for point rows the cos 4k theta fit, since the points
   // scatter about it by some 10 % (see line_force.hpp).
@@ -373,9 +372,9 @@ int main(int argc, char** argv) {
   try {
     if (finest < 4 * coarsest) throw std::invalid_argument("--finest must be at least 4 times --coarsest (three grids)");
     const auto pub = read_paper_numbers(numbers);
-    const PaperScene scene = paper_scene(pub);
+    const Scene scene = paper_scene();
     Study s;
-    s.yardstick = rim_answer(rim_scene(scene));
+    s.yardstick = rim_answer(scene);
     if (!s.yardstick.premise.holds || !s.yardstick.settled)
       throw std::runtime_error("the rim-contact series gives no answer to measure against: " +
                                (s.yardstick.premise.holds ? std::string("its truncations have not settled")
@@ -384,7 +383,7 @@ int main(int argc, char** argv) {
     std::ostringstream timings;
     timings << "# continuum run times in seconds (assembly and exact solve, grid-sequenced); not byte-identical\n"
                "sampling,n,seconds\n";
-    for (const Variant& v : variants(scene)) {
+    for (const Variant& v : variants()) {
       s.kinds.push_back(v.name);
       for (int n : s.grids) {
         std::cerr << "continuum: " << v.name << " sampling, n = " << n << "\n";

@@ -24,11 +24,9 @@ using namespace plate;
 namespace {
 // f = 1 and phi = -1: the plate never reaches the obstacle, so every step is linear.
 Problem no_contact_problem(int n, SamplingKind kind) {
-  return make_problem(make_grid(n), kind, [](double, double) { return -1.0; }, [](double, double) { return 1.0; });
+  return make_problem(expression_scene(1, 1, "-1", "1"), make_grid(n), SamplingSpec{kind});
 }
-Problem paper_problem(int n, SamplingKind kind, const Field& phi) {
-  return make_problem(make_grid(n), kind, phi, [](double, double) { return 0.0; });
-}
+Problem paper_problem(int n, SamplingKind kind) { return make_problem(paper_scene(), make_grid(n), SamplingSpec{kind}); }
 
 // (D7) on the paper's own grid: at one eps, the linear scheme's step at every iteration, its true
 // distance to the exact penalised solution w_eps, and the bound step / (eps lambda_1h) that (D7)
@@ -78,8 +76,6 @@ int main(int argc, char** argv) {
   app.footer(kExitStatusHelp);
   if (const int status = parse_options(app, argc, argv, "contraction"); status >= 0) return status;
   try {
-    const PaperScene scene = read_paper_scene(reference);
-    const Field paper_phi = scene.obstacle();
     std::ostringstream md;
     std::string history;
     md << "<!-- Written by build/contraction (make results); do not edit. -->\n\n"
@@ -93,7 +89,7 @@ int main(int argc, char** argv) {
     for (int n : grids)
       for (SamplingKind kind : {SamplingKind::Gauss, SamplingKind::Nodes}) {
         std::cerr << "contraction: h = 1/" << n << ", " << to_string(kind) << " sampling\n";
-        const Problem free = no_contact_problem(n, kind), paper = paper_problem(n, kind, paper_phi);
+        const Problem free = no_contact_problem(n, kind), paper = paper_problem(n, kind);
         const double lambda = smallest_eigenpair(free.K, free.M).lambda;
         for (double eps : epss) {
           const double q = sharp_contraction(lambda, eps);
@@ -125,9 +121,9 @@ int main(int argc, char** argv) {
           "ratio with $q^2$.\n";
     {
       std::cerr << "contraction: the linear scheme's history on the paper's grid\n";
-      const int n = scene.cells;  // the paper's h = 1/4
+      const int n = paper_cells();  // the paper's h = 1/4
       const Problem free = no_contact_problem(n, SamplingKind::Nodes);
-      history = linear_history(paper_problem(n, SamplingKind::Nodes, paper_phi), 1e-6,
+      history = linear_history(paper_problem(n, SamplingKind::Nodes), 1e-6,
                                smallest_eigenpair(free.K, free.M).lambda, 40000);
     }
     std::filesystem::create_directories(out);

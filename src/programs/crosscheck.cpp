@@ -38,7 +38,7 @@ struct Setup {
   std::string square_geo = "reference/square_with_circle.geo", disk_geo = "reference/disk_with_punch.geo";
   std::string edp = "reference/contact_hct.edp", reference = "reference";
   std::string work = "build/crosscheck-work", out = "results";  // not build/crosscheck: the program
-  PaperScene scene;           // from reference/paper_numbers.csv
+  Scene scene = paper_scene();  // reference/paper_numbers.csv
   DiskPunch disk;             // radius 0.5 about the scene's centre; the scene's radius and height
   double uniform_centre = 0;  // published, from reference/plate_constants.csv
 };
@@ -66,12 +66,13 @@ struct Quantity {
   int deflection = -1;  // the index into noise_w of a deflection; -1: a force
   double noise(const CheckValues& r) const { return deflection >= 0 ? noise_w(r, deflection) : ::noise(r, get(r)); }
 };
-std::vector<Quantity> quantities(const PaperScene& scene) {
+std::vector<Quantity> quantities(const Scene& scene) {
+  const Cylinder& c0 = *scene.cylinder;
   std::vector<Quantity> q = {{"max w", "max_w", [](const CheckValues& r) { return r.max_w; }, 1e-6, false, 0}};
   for (int k = 0; k < 3; ++k) {
     const CheckPoint& c = kCheckPoints[k];
     q.push_back({c.name, fmt("w_%g", c.x) + fmt("_%g", c.y), [k](const CheckValues& r) { return r.w_at.at(k); }});
-    q.back().held = std::abs(std::hypot(c.x - scene.cx, c.y - scene.cy) - scene.radius) <= 1e-12;
+    q.back().held = std::abs(std::hypot(c.x - c0.cx, c.y - c0.cy) - c0.radius) <= 1e-12;
     q.back().deflection = 1 + k;
   }
   q.push_back({"total contact force", "total_force", [](const CheckValues& r) { return r.force; }, 1e-5});
@@ -104,7 +105,7 @@ std::vector<CheckValues> run_freefem_levels(const Setup& u, const std::string& g
                                             const std::vector<int>& levels, const std::string& points,
                                             const std::vector<std::pair<std::string, double>>& extra,
                                             std::vector<double>* uniform) {
-  const PaperScene& s = u.scene;
+  const Scene& s = u.scene;
   const std::string args = scene_args(s, points);
   std::vector<CheckValues> runs;
   for (int n : levels) {
@@ -113,7 +114,7 @@ std::vector<CheckValues> run_freefem_levels(const Setup& u, const std::string& g
     numbers.insert(numbers.end(), extra.begin(), extra.end());
     gmsh_mesh(geo, numbers, msh);
     std::cerr << "crosscheck: FreeFEM, " << name << ", " << 4 * n << " cells per quarter circle\n";
-    runs.push_back(freefem_values(run_freefem(u.edp, msh, args, msh + ".json"), 4 * n, s.radius));
+    runs.push_back(freefem_values(run_freefem(u.edp, msh, args, msh + ".json"), 4 * n, s.cylinder->radius));
     if (uniform)
       uniform->push_back(run_freefem(u.edp, msh, args + " -obstacle none -load 1", msh + ".uniform.json").at("max_w").get<double>());
   }
@@ -122,21 +123,20 @@ std::vector<CheckValues> run_freefem_levels(const Setup& u, const std::string& g
 
 Runs run_all(const Setup& u) {
   Runs r;
-  const PaperScene& s = u.scene;
+  const Scene& s = u.scene;
   const std::string square_points_file = u.work + "/square_points.txt", disk_points_file = u.work + "/disk_points.txt";
   write_points(square_points_file, square_points());
-  write_points(disk_points_file, {{s.cx, s.cy}});
+  write_points(disk_points_file, {{s.cylinder->cx, s.cylinder->cy}});
   r.ff = run_freefem_levels(u, u.square_geo, "square", u.ff_levels, square_points_file, {}, &r.ff_uniform);
   r.disk = run_freefem_levels(u, u.disk_geo, "disk", u.disk_levels, disk_points_file, {{"a", u.disk.a}}, nullptr);
-  const Field phi = s.obstacle();
   for (int n : u.edge_ns) {
     std::cerr << "crosscheck: this code, edge sampling, n = " << n << "\n";
-    r.edge.push_back(solve_ours(n, SamplingSpec{SamplingKind::Edge, s.rim()}, phi, s.rim()));
+    r.edge.push_back(solve_ours(s, n, SamplingSpec{SamplingKind::Edge}));
   }
   for (int n : u.record_ns) {
     std::cerr << "crosscheck: this code, Gauss and nodal sampling, n = " << n << "\n";
-    r.gauss.push_back(solve_ours(n, SamplingSpec{SamplingKind::Gauss, {}}, phi, s.rim()));
-    r.nodes.push_back(solve_ours(n, SamplingSpec{SamplingKind::Nodes, {}}, phi, s.rim()));
+    r.gauss.push_back(solve_ours(s, n, SamplingSpec{SamplingKind::Gauss}));
+    r.nodes.push_back(solve_ours(s, n, SamplingSpec{SamplingKind::Nodes}));
     r.our_uniform.push_back(uniform_load_centre_ours(n));
   }
   return r;
@@ -155,7 +155,7 @@ const char* label(const std::vector<CheckValues>& runs, const Runs& r) {
 void write_tables(const Setup& u, const Runs& runs) {
   std::ostringstream csv, timings;
   csv << "# crosscheck: two scenes solved exactly; made by build/crosscheck. square: the paper's problem (f = 0,\n"
-         "# R = " << u.scene.height << " on the disk of radius " << u.scene.radius << "); disk: a clamped disk of radius "
+         "# R = " << u.scene.cylinder->height << " on the disk of radius " << u.scene.cylinder->radius << "); disk: a clamped disk of radius "
       << u.disk.a << " on a flat punch of radius " << u.disk.b << " and height " << u.disk.R << ", f = 0 (its w(0) is max_w).\n"
          "# code: freefem-hct (reference/contact_hct.edp; cells along a quarter circle), bfs-edge, bfs-gauss, bfs-nodes\n"
          "# (this code; n x n cells); h: 1/n, or FreeFEM's longest edge. Digits down to 10 times each code's round-off bound\n"
@@ -224,7 +224,7 @@ void runs_table(std::ostream& md, const Runs& runs, const std::vector<const std:
 }
 
 void describe(std::ostream& md, const Setup& u, const Runs& runs) {
-  const PaperScene& s = u.scene;
+  const Cylinder& s = *u.scene.cylinder;
   md << "# Cross-code check: this code against FreeFEM\n\n"
      << "Made by `make crosscheck` (`build/crosscheck`); numbers in `crosscheck.csv`, run times in "
         "`crosscheck_timings.csv`.\n\n"
@@ -332,12 +332,12 @@ bool square_verdict(std::ostream& md, std::ostream& agreement, const Setup& u, c
 // shows here. It is a measurement of the bars, reported; the exit status stays the two codes'
 // agreement and the closed forms, so a bar found too small does not stop `make all`.
 bool against_series(std::ostream& md, const Setup& u, const Runs& runs) {
-  const RimAnswer y = rim_answer(rim_scene(u.scene));
+  const RimAnswer y = rim_answer(u.scene);
   const RimSeries& s = y.finest;
   const std::map<std::string, std::pair<double, double>> series = {
       {"max_w", {y.rows.back().max_w, y.bar_max_w}},
       {"total_force", {s.total_force(), y.bar_force}},
-      {"mean_line_force", {s.q_cos.at(0), y.bar_force / (2 * M_PI * u.scene.radius)}},
+      {"mean_line_force", {s.q_cos.at(0), y.bar_force / (2 * M_PI * u.scene.cylinder->radius)}},
       {"q_0", {s.q(0), y.bar_q0}},
       {"q_pi_4", {s.q(M_PI / 4), y.bar_q45}}};
   md << "\n### Against the rim-contact series\n\nThe plate's answer without a grid (`rim_series.md`, section "
@@ -510,8 +510,7 @@ int main(int argc, char** argv) {
   try {
     std::filesystem::create_directories(u.work);
     std::filesystem::create_directories(u.out);
-    u.scene = read_paper_scene(u.reference);
-    u.disk = DiskPunch{0.5, u.scene.radius, u.scene.height};
+    u.disk = DiskPunch{0.5, u.scene.cylinder->radius, u.scene.cylinder->height};
     u.uniform_centre = plate_constant(u.reference, "uniform_centre");
     const Runs runs = run_all(u);
     write_tables(u, runs);

@@ -54,28 +54,29 @@ struct Setup {
   std::string geo = "reference/square_with_circle.geo", penalty = "reference/penalty_hct.edp";
   std::string exact = "reference/contact_hct.edp", reference = "reference", results = "results";
   std::string work = "build/crosscheck-penalty-work", out = "results";
-  PaperScene scene;
+  Scene scene = paper_scene();
+  // What this run has made in --work: the meshes (by level) and the points file, made once each and
+  // then reused (never a file an earlier run left there, which may come from another .geo or have
+  // been cut short), and the FreeFEM runs so far, which number their output files.
+  mutable std::set<int> meshes_made;
+  mutable bool points_written = false;
+  mutable int penalty_runs = 0;
 };
 
-// FreeFEM's mesh of level n, meshed by this run (never a file an earlier run left in --work, which
-// may come from another .geo or have been cut short) and then reused within it.
+// FreeFEM's mesh of level n, meshed by this run and then reused within it.
 std::string mesh(const Setup& s, int n) {
-  static std::set<int> made;
   const std::string msh = s.work + "/square" + std::to_string(n) + ".msh";
-  if (made.insert(n).second) gmsh_mesh(s.geo, circle_numbers(s.scene, n), msh);
+  if (s.meshes_made.insert(n).second) gmsh_mesh(s.geo, circle_numbers(s.scene, n), msh);
   return msh;
 }
 std::string points(const Setup& s) {
-  static bool written = false;  // once per run, like the meshes
   const std::string pts = s.work + "/points.txt";
-  if (!written) write_points(pts, {{s.scene.cx, s.scene.cy}}), written = true;
+  if (!s.points_written) write_points(pts, {{s.scene.cylinder->cx, s.scene.cylinder->cy}}), s.points_written = true;
   return pts;
 }
-int run_count = 0;
 PenaltyRun penalty(const Setup& s, int n, const std::string& args, double R) {
-  PaperScene scene = s.scene;
-  scene.height = R;
-  const std::string out = s.work + "/penalty" + std::to_string(++run_count) + ".json";
+  const Scene scene = at_height(s.scene, R);
+  const std::string out = s.work + "/penalty" + std::to_string(++s.penalty_runs) + ".json";
   return penalty_values(run_freefem(s.penalty, mesh(s, n), scene_args(scene, points(s)) + " " + args, out));
 }
 std::string eps_arg(double eps) {
@@ -145,8 +146,8 @@ double rel(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 
 
 // ---- our side at fixed eps ---------------------------------------------------------------------
 // The exact discrete w_eps of the paper's scene on h = 1/n for eps = 0.1, 0.01, ... down to eps.
-std::pair<Problem, std::vector<VectorXd>> our_path(const PaperScene& sc, int n, SamplingKind kind, double eps) {
-  Problem p = make_problem(make_grid(n), kind, sc.obstacle(), [](double, double) { return 0.0; });
+std::pair<Problem, std::vector<VectorXd>> our_path(const Scene& sc, int n, SamplingKind kind, double eps) {
+  Problem p = make_problem(sc, make_grid(n), SamplingSpec{kind});
   std::vector<VectorXd> path = penalised_path(p, eps);
   return {std::move(p), std::move(path)};
 }
@@ -169,15 +170,14 @@ TablePart run_table(const Setup& s, const std::vector<PublishedRow>& paper, cons
   for (const PublishedRow& p : paper) {
     TableRow row{p, ours_iterations(ours_table, "nodes", p.tolerance), ours_iterations(ours_table, "gauss", p.tolerance), {}};
     for (int n : s.table_levels) {
-      const PenaltyRun r = penalty(s, n, "-scheme linear -sampling vertices -tol " + fmt("%.17g", p.tolerance), s.scene.height);
+      const PenaltyRun r = penalty(s, n, "-scheme linear -sampling vertices -tol " + fmt("%.17g", p.tolerance), s.scene.cylinder->height);
       row.freefem.push_back(r.converged ? r.iterations : -1);
       if (!r.converged) all_ok = false;
     }
     table.push_back(row);
   }
   for (int n : s.table_levels) {
-    PaperScene below = s.scene;
-    below.height = -1;  // far under the plate: no contact
+    const Scene below = at_height(s.scene, -1);  // far under the plate: no contact
     const std::string out = s.work + "/eigen" + std::to_string(n) + ".json";
     const PenaltyRun r = penalty_values(run_freefem(
         s.penalty, mesh(s, n),
@@ -203,14 +203,14 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
   auto& comparisons = part.comparisons;
   bool& all_ok = part.ok;
   std::cerr << "crosscheck_penalty: fixed eps (" << s.eps_values.size() << " values, FreeFEM and this code)\n";
-  const PaperScene& sc = s.scene;
+  const Scene& sc = s.scene;
   // Each grid's path of exact w_eps, eps = 0.1, 0.01, ... down to the smallest eps here, once.
   std::vector<std::pair<Problem, std::vector<VectorXd>>> paths;
   for (int n : s.eps_ns) paths.push_back(our_path(sc, n, SamplingKind::Gauss, s.eps_values.back()));
   for (double eps : s.eps_values) {
     std::vector<double> fw, ff, fwn, ffn, ow, of, own, ofn;
     for (int n : s.eps_levels) {
-      const PenaltyRun r = penalty(s, n, "-scheme nonlinear -sampling quadrature -continuation 0 -tol 1e-13" + eps_arg(eps), sc.height);
+      const PenaltyRun r = penalty(s, n, "-scheme nonlinear -sampling quadrature -continuation 0 -tol 1e-13" + eps_arg(eps), sc.cylinder->height);
       if (!r.converged) throw std::runtime_error("penalty_hct.edp did not converge at eps = " + fmt("%g", eps) + ": " + r.why);
       eps_runs.push_back({kFreefemCode, 4 * n, r.h, r.max_w, r.force});
       fw.push_back(r.max_w), ff.push_back(r.force);
@@ -239,7 +239,7 @@ void run_rate(const Setup& s, EpsPart& part) {
   auto& rate = part.rate;
   auto& rate_noise = part.rate_noise;
   bool& rate_ok = part.rate_ok;
-  const PaperScene& sc = s.scene;
+  const Scene& sc = s.scene;
 
   std::cerr << "crosscheck_penalty: the rate w_eps -> w (eps down to " << s.rate_eps.back() << ")\n";
   const nlohmann::json ff_exact = run_freefem(s.exact, mesh(s, s.rate_level), scene_args(sc, points(s)), s.work + "/exact.json");
@@ -247,12 +247,12 @@ void run_rate(const Setup& s, EpsPart& part) {
   const double ff_w0 = ff_exact.at("max_w").get<double>(), ff_f0 = ff_exact.at("total_contact_force").get<double>();
   const double ff_h = ff_exact.at("hmax").get<double>();
   rate_noise = {2 * freefem_roundoff(ff_h, ff_w0), 2 * freefem_roundoff(ff_h, ff_f0), 0, 0};
-  const CheckValues our_exact = solve_ours(s.rate_n, SamplingSpec{SamplingKind::Nodes}, sc.obstacle(), sc.rim());
+  const CheckValues our_exact = solve_ours(sc, s.rate_n, SamplingSpec{SamplingKind::Nodes});
   rate_noise[2] = 2 * exact_solve_roundoff(s.rate_n, our_exact.max_w);
   rate_noise[3] = 2 * exact_solve_roundoff(s.rate_n, our_exact.force);
   const auto [p, path] = our_path(sc, s.rate_n, SamplingKind::Nodes, s.rate_eps.back());
   for (double eps : s.rate_eps) {
-    const PenaltyRun r = penalty(s, s.rate_level, "-scheme nonlinear -sampling vertices -continuation 0 -tol 1e-14" + eps_arg(eps), sc.height);
+    const PenaltyRun r = penalty(s, s.rate_level, "-scheme nonlinear -sampling vertices -continuation 0 -tol 1e-14" + eps_arg(eps), sc.cylinder->height);
     if (!r.converged) throw std::runtime_error("penalty_hct.edp did not converge at eps = " + fmt("%g", eps) + ": " + r.why);
     const VectorXd& w = at_eps(path, eps);
     rate.push_back({ff_w0 - r.max_w, ff_f0 - r.force, our_exact.max_w - max_nodal_abs(w),
@@ -287,7 +287,7 @@ Fig2Part run_fig2(const Setup& s, const CsvTable& ours_fig2) {
     const double R = ours_fig2.number(r, "R");
     const PenaltyRun f = penalty(s, s.fig2_level, "-scheme nonlinear -continuation 0 -tol 1e-13" + eps_arg(s.fig2_eps), R);
     if (!f.converged) throw std::runtime_error("penalty_hct.edp did not converge for Fig. 2 at R = " + fmt("%g", R) + ": " + f.why);
-    if (std::abs(R - s.scene.height) <= 1e-12 * s.scene.height) ff_fine = f;
+    if (std::abs(R - s.scene.cylinder->height) <= 1e-12 * s.scene.cylinder->height) ff_fine = f;
     fig2.push_back({R, f.max_w, f.max_m12, f.force, ours_fig2.number(r, "max_w"), ours_fig2.number(r, "max_m12"),
                     ours_fig2.number(r, "force")});
   }
@@ -306,8 +306,8 @@ Fig2Part run_fig2(const Setup& s, const CsvTable& ours_fig2) {
   }
   if (std::isnan(our_w_prev) || std::isnan(our_w_fine))
     throw std::runtime_error(ours_mesh.path + " lacks the nodal rows n = " + std::to_string(mesh_n / 2) + " and " + std::to_string(mesh_n));
-  const PenaltyRun ff_coarse = penalty(s, s.fig2_level / 2, "-scheme nonlinear -continuation 0 -tol 1e-13" + eps_arg(s.fig2_eps), s.scene.height);
-  if (!ff_fine) throw std::runtime_error(ours_fig2.path + " has no row at the paper's R = " + fmt("%g", s.scene.height));
+  const PenaltyRun ff_coarse = penalty(s, s.fig2_level / 2, "-scheme nonlinear -continuation 0 -tol 1e-13" + eps_arg(s.fig2_eps), s.scene.cylinder->height);
+  if (!ff_fine) throw std::runtime_error(ours_fig2.path + " has no row at the paper's R = " + fmt("%g", s.scene.cylinder->height));
   if (!ff_coarse.converged) throw std::runtime_error("penalty_hct.edp did not converge at the paper's R: " + ff_coarse.why);
   fig2_w_diff = rel(ff_fine->max_w, our_w_fine), fig2_f_diff = rel(ff_fine->force, our_f_fine);
   fig2_w_tol = rel(ff_fine->max_w, ff_coarse.max_w) + rel(our_w_fine, our_w_prev);
@@ -481,7 +481,7 @@ std::string fig2_md(const Setup& s, const Fig2Part& part) {
      << " cells per quarter circle, this code at h = 1/" << our_n << " (nodal sampling, results/fig2.csv); eps = "
      << fmt("%g", s.fig2_eps) << ", scheme (3a), nu = 0.3. Read each pair of columns; the paragraph below judges their "
         "difference at the paper's R against the meshes' own increments.\n";
-  md << "\nAt the paper's R = " << fmt("%g", s.scene.height) << ", FreeFEM as above against ours at h = 1/" << mesh_n
+  md << "\nAt the paper's R = " << fmt("%g", s.scene.cylinder->height) << ", FreeFEM as above against ours at h = 1/" << mesh_n
      << " (results/fig2_mesh.csv): max w differs by " << fmt("%.2e", fig2_w_diff)
      << " (relative), within the codes' last mesh increments summed, " << fmt("%.2e", fig2_w_tol)
      << (fig2_w_diff <= fig2_w_tol ? "" : " : NOT within") << "; the force by " << fmt("%.2e", fig2_f_diff) << ", against "
@@ -530,7 +530,6 @@ int main(int argc, char** argv) {
       check_writable(s.out + "/" + f);
     std::filesystem::create_directories(s.work);
     const auto numbers = read_paper_numbers(s.reference + "/paper_numbers.csv");
-    s.scene = paper_scene(numbers);
     const std::vector<PublishedRow> paper = read_paper_table(s.reference + "/paper_table.csv");
     const CsvTable ours_table = read_csv_table(s.results + "/table.csv");
     const CsvTable ours_contraction = read_csv_table(s.results + "/contraction.csv");

@@ -34,11 +34,9 @@ int main(int argc, char** argv) {
   if (const int status = parse_options(app, argc, argv, "fig1"); status >= 0) return status;
 
   try {
-    const PaperScene scene = read_paper_scene(reference);
-    const Field phi = scene.obstacle();
     const SamplingKind kind = sampling == "gauss" ? SamplingKind::Gauss : SamplingKind::Nodes;
     const Grid g = make_grid(n);
-    const Problem p = make_problem(g, kind, phi, [](double, double) { return 0.0; });
+    const Problem p = make_problem(paper_scene(), g, SamplingSpec{kind});
     const VectorXd w = penalised_path(p, eps).back();
 
     std::ostringstream points, surface, contact;

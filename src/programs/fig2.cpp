@@ -36,10 +36,9 @@ struct Point {
 // positively homogeneous in (R, w) at fixed eps, so every quantity below is exactly linear in R.
 Point measure(int n, SamplingKind kind, double R, double eps, double nu, const std::map<std::string, double>& pub) {
   const double r = published(pub, "obstacle_radius");
-  const Field phi = paper_scene(pub).obstacle(R);
-  const Problem p = make_problem(make_grid(n), kind, phi, [](double, double) { return 0.0; });
+  const Problem p = make_problem(paper_scene(R), make_grid(n), SamplingSpec{kind});
   const VectorXd w = penalised_path(p, eps).back();
-  const NodalFields f = nodal_fields(p, w, phi, eps, nu);
+  const NodalFields f = nodal_fields(p, w, eps, nu);
   const double force = total_contact_force(p, contact_force_density(p, w, eps));
   return {n, kind, R, max_abs(f.xi), max_abs(f.m12), max_abs(f.w), force, force / (2 * M_PI * r)};
 }
@@ -112,7 +111,7 @@ int main(int argc, char** argv) {
 
   try {
     const auto pub = read_paper_numbers(reference + "/paper_numbers.csv");
-    const int n_paper = paper_scene(pub).cells;
+    const int n_paper = paper_cells();
     std::vector<Point> sweep, study;
     std::ostringstream fit;
     fit << "<!-- Written by build/fig2 (make results); do not edit. -->\n\n"

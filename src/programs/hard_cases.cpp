@@ -32,7 +32,7 @@ namespace {
 // `plate` program and a scratch folder.
 struct Context {
   double lambda1 = 0, point = 0, sag = 0;
-  PaperScene scene;
+  Scene scene;
   std::string plate, cases, scratch;
   int fine = 512;
   std::ostringstream* timings = nullptr;  // case,n,run,seconds
@@ -124,14 +124,14 @@ void small_eps(std::ostream& md, const Context& c) {
         "is within tol. \"predicted (5a)\" is 1 + ln(first step / tol) / ln(1 + eps lambda_1) with the published "
         "lambda_1 = " << fmt("%.5f", c.lambda1) << ": Theorem 2 says (5a) needs no more.\n\n";
   {
-    const Problem p = make_problem(make_grid(16), SamplingKind::Nodes, c.scene.obstacle(), uniform(0));
+    const Problem p = make_problem(c.scene, make_grid(16), SamplingSpec{SamplingKind::Nodes});
     const ExactResult exact = solve_exact(p, ExactOptions{});
     eps_sweep(md, p, exact.w, "exact", 1e-8, 20000, c.lambda1,
               "h = 1/16, nodal sampling, each eps against the exact-constraint solution (certificate " +
                   fmt("%.1e", exact.certificate.worst()) + ").");
   }
   for (int n : {16, 4}) {  // 4: the paper's own grid
-    const Problem p = make_problem(make_grid(n), SamplingKind::Gauss, c.scene.obstacle(), uniform(0));
+    const Problem p = make_problem(c.scene, make_grid(n), SamplingSpec{SamplingKind::Gauss});
     const EpsLimit limit = eps_limit(p);
     eps_sweep(md, p, limit.w, "limit", 1e-8, 20000, c.lambda1,
               "h = 1/" + std::to_string(n) + ", Gauss sampling" + (n == 4 ? " (the paper's grid and (8) as printed)" : "") +
@@ -148,7 +148,7 @@ void point_obstacle(std::ostream& md, const Context& c) {
         "|---:|---:|---:|---:|\n";
   for (int n : {16, 32, 64, 128}) {
     const Grid g = make_grid(n);
-    const Problem p = make_problem(g, SamplingKind::Nodes, centre_spike(g, 0.01), uniform(0));
+    const Problem p = make_problem(field_scene(g.whole_lx(), g.whole_ly(), centre_spike(g, 0.01), uniform(0)), g, SamplingSpec{SamplingKind::Nodes});
     const ExactResult r = solve_exact(p, ExactOptions{});
     const double P = p.sampling.weights.dot(r.lambda);
     const std::string force = fmt("%.4f", P), ratio = fmt("%.7f", 0.01 / P),
@@ -170,7 +170,8 @@ void flat_support(std::ostream& md, const Context& c) {
         "The free plate sags by " << c.sag << " q at the centre (published), so contact must start when R drops below "
         "that; inside the contact area w = -R, so Lap^2 w = 0 and the force density equals q.\n\n";
   for (double factor : {1.01, 0.99}) {
-    const ExactResult r = solve_exact(make_grid(32), uniform(-c.sag * factor), uniform(-1), ExactOptions{});
+    Problem sag = make_problem(field_scene(1, 1, uniform(-c.sag * factor), uniform(-1)), make_grid(32), SamplingSpec{SamplingKind::Nodes});
+    const ExactResult r = solve_sequenced(sag, ExactOptions{});
     md << "- n = 32, R = " << fmt("%.2f", factor) << " x the published sag: " << members(r.active) << " touching nodes"
        << (r.converged ? "" : " (not converged)") << ".\n";
   }
@@ -182,10 +183,10 @@ void flat_support(std::ostream& md, const Context& c) {
   int previous = 0;
   for (int n : {32, 64, 128, 256}) {
     const Grid g = make_grid(n);
-    Problem p = make_problem(g, SamplingKind::Nodes, uniform(-5e-4), uniform(-1));
+    Problem p = make_problem(field_scene(g.whole_lx(), g.whole_ly(), uniform(-5e-4), uniform(-1)), g, SamplingSpec{SamplingKind::Nodes});
     std::cerr << "hard_cases: flat support, n = " << n << "\n";
     auto t0 = Clock::now();
-    const ExactResult r = solve_exact(p, uniform(-5e-4), uniform(-1), ExactOptions{});
+    const ExactResult r = solve_sequenced(p, ExactOptions{});
     const double s = seconds_since(t0);
     const ExactLevel& l = r.levels.back();
     md << "| " << n << " | " << members(r.active) << " | "
@@ -223,7 +224,7 @@ void many_regions(std::ostream& md, const Context&) {
         "|---:|---:|---:|---:|:---:|---:|---:|---:|\n";
   for (double q : {100.0, 300.0, 1000.0}) {
     const Grid g = make_grid(64);
-    const Problem p = make_problem(g, SamplingKind::Nodes, bumps(4, -1.0, -0.01), uniform(-q));
+    const Problem p = make_problem(field_scene(g.whole_lx(), g.whole_ly(), bumps(4, -1.0, -0.01), uniform(-q)), g, SamplingSpec{SamplingKind::Nodes});
     const ExactResult r = solve_exact(p, ExactOptions{});
     const SweepRow pen = sweep_row(p, Scheme::Nonlinear, 1e-10, 1e-8, 100, r.w);
     const VectorXd xi = contact_force_density(p, pen.w, 1e-10);
@@ -260,10 +261,10 @@ void million_unknowns(std::ostream& md, const Context& c) {
      << " unknowns; the same discrete problem, mirror.hpp).\n\n"
         "| solver | settings | certified | iterations | factorisations | error bound or certificate | "
         "vs exact |\n|---|---|:---:|---:|---:|---:|---:|\n";
-  Problem p = make_problem(quarter, SamplingKind::Nodes, c.scene.obstacle(), uniform(0));
+  Problem p = make_problem(c.scene, quarter, SamplingSpec{SamplingKind::Nodes});
   std::cerr << "hard_cases: n = " << c.fine << ", exact\n";
   const auto t0 = Clock::now();
-  const ExactResult exact = solve_exact(p, c.scene.obstacle(), uniform(0), ExactOptions{});
+  const ExactResult exact = solve_sequenced(p, ExactOptions{});
   const double s_exact = seconds_since(t0);
   int exact_f = 0;
   for (const auto& l : exact.levels) exact_f += l.factorizations;
@@ -285,7 +286,7 @@ void million_unknowns(std::ostream& md, const Context& c) {
   md << "\nAt the same eps the penalised solution is further from the exact one here than on n = 16 (the "
         "nodal table above): the contact force concentrates on the rim, and its nodal density grows as h "
         "falls.\n";
-  const Problem free = make_problem(quarter, SamplingKind::Nodes, uniform(-1), uniform(1));
+  const Problem free = make_problem(field_scene(quarter.whole_lx(), quarter.whole_ly(), uniform(-1), uniform(1)), quarter, SamplingSpec{SamplingKind::Nodes});
   const double eps = 1e-3;
   const std::vector<double> steps = linear_step_norms(free, eps, 30);
   const double factor = asymptotic_factor(steps), measured = (1 / factor - 1) / eps;
@@ -350,7 +351,7 @@ int main(int argc, char** argv) {
     c.lambda1 = published(constants, "lambda1", constants_path);
     c.point = published(constants, "point_centre", constants_path);
     c.sag = published(constants, "uniform_centre", constants_path);
-    c.scene = read_paper_scene(reference);
+    c.scene = paper_scene();
     std::ostringstream md, input, timings;
     timings << "# hard_cases run times in seconds (they vary between runs)\ncase,n,run,seconds\n";
     c.timings = &timings;

@@ -28,14 +28,14 @@ using namespace plate;
 
 namespace {
 
-struct Scene {
+struct Case {
   const char* key;   // in the CSV
   const char* name;  // in the report
   double lx, ly, cx, cy;
   int n16;  // cells along x for h = 1/16
 };
 // The cylinder of the paper (R = 0.0625, radius 0.25) on plates where it does not touch all round.
-const Scene kScenes[] = {{"2x1-centred", "2 x 1, centred", 2, 1, 1, 0.5, 32},
+const Case kScenes[] = {{"2x1-centred", "2 x 1, centred", 2, 1, 1, 0.5, 32},
                          {"1.5x1-centred", "1.5 x 1, centred", 1.5, 1, 0.75, 0.5, 24},
                          {"1.5x1-off-centre", "1.5 x 1, at (0.6, 0.45)", 1.5, 1, 0.6, 0.45, 24}};
 constexpr double kR = 0.0625, kRadius = 0.25;
@@ -51,7 +51,7 @@ const Rows kRows[] = {{"default", "default (D28)", EdgeRows{}, 16},
                       {"splines", "splines alone", EdgeRows::splines(3), 8}};
 
 struct Run {
-  const Scene* scene = nullptr;
+  const Case* scene = nullptr;
   const Rows* rows = nullptr;  // null: FreeFEM
   int n = 0;
   double h = 0;
@@ -61,17 +61,16 @@ struct Run {
   int arcs = -1, points = 0, exchanged = 0;  // the layout of the default rows (arcs -1: periodic splines)
 };
 
-Run solve(const Scene& s, const Rows& r, int n) {
-  const Field phi = cylinder(s.cx, s.cy, kRadius, kR), none = [](double, double) { return 0.0; };
-  const SamplingSpec spec{SamplingKind::Edge, circle_edge(s.cx, s.cy, kRadius), r.rows};
+Run solve(const Case& s, const Rows& r, int n) {
+  const Scene scene = cylinder_scene(s.lx, s.ly, Cylinder{s.cx, s.cy, kRadius, kR});
   const auto t0 = Clock::now();
-  const SceneSolution x = solve_exact_scene(make_grid(n, s.lx, s.ly), spec, phi, none, ExactOptions{});
+  const SceneSolution x = solve_exact_scene(scene, n, SamplingSpec{SamplingKind::Edge, r.rows}, ExactOptions{});
   Run run{&s, &r, n, s.lx / n};
   run.seconds = seconds_since(t0);
   run.certified = x.result.converged;
   run.max_w = extremum_of_w(x.whole().grid, x.result.w, +1).value;
   run.force = total_contact_force(x.whole(), x.result.lambda);
-  run.dip = dip_below_edge(x.whole(), x.result.w, phi);
+  run.dip = dip_below_edge(x.whole(), x.result.w);
   const Sampling& sam = x.whole().sampling;
   if (sam.rim_laid_out()) {
     run.arcs = static_cast<int>(sam.rim.arcs.size());
@@ -86,7 +85,7 @@ Run solve(const Scene& s, const Rows& r, int n) {
 }
 
 // FreeFEM's exact script on the O-grid mesh with 4 m cells per quarter circle.
-Run freefem(const Scene& s, int m, const std::string& work) {
+Run freefem(const Case& s, int m, const std::string& work) {
   const std::string base = work + "/" + std::to_string(&s - kScenes) + "_" + std::to_string(m);
   gmsh_mesh("reference/square_with_circle.geo", {{"n", m}, {"lx", s.lx}, {"ly", s.ly}, {"cx", s.cx}, {"cy", s.cy}, {"r", kRadius}},
             base + ".msh");
@@ -136,7 +135,7 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(work);
     Progress progress("liftoff", false);
     std::vector<Run> runs;
-    for (const Scene& s : kScenes) {
+    for (const Case& s : kScenes) {
       for (const Rows& r : kRows)
         for (int k = 1; k <= r.finest; k *= 2) {
           progress.stage(std::string(s.name) + ", " + r.name + ", h = 1/" + std::to_string(16 * k));
@@ -168,7 +167,7 @@ int main(int argc, char** argv) {
     std::ostringstream md;
     md << "Made by `build/liftoff` (`make liftoff`); numbers in `liftoff.csv`.\n\n";
     int failures = 0;
-    for (const Scene& s : kScenes) {
+    for (const Case& s : kScenes) {
       md << "### " << s.name << "\n\n| h | rows | certified | max w | total force | dip / R | layout |\n|---|---|:---:|---:|---:|---:|---|\n";
       std::vector<double> ours, theirs;
       double ours_noise = 0, theirs_noise = 0;  // of the finest of each

@@ -124,12 +124,10 @@ struct Options {
 };
 
 int solve(const Options& o) {
-  const PaperScene scene = read_paper_scene(o.reference);
-  const Field phi = scene.obstacle(), no_load = [](double, double) { return 0.0; };
   Measurements m;
   std::map<std::string, double>& v = m.v;
   const auto t0 = Clock::now();
-  const Problem p = make_problem(make_grid(o.n), SamplingKind::Nodes, phi, no_load);
+  const Problem p = make_problem(paper_scene(), make_grid(o.n), SamplingSpec{SamplingKind::Nodes});
   const int N = p.grid.unknowns();
   // The bounds: phi at the value of each sampled node (row q of S is node q's value, 4 q), none elsewhere.
   VectorXd lower = VectorXd::Constant(N, PETSC_NINFINITY), upper = VectorXd::Constant(N, PETSC_INFINITY);

@@ -23,6 +23,7 @@
 #include "fields.hpp"
 #include "format.hpp"
 #include "norms.hpp"
+#include "paper_numbers.hpp"
 #include "progress.hpp"
 #include "rim_report.hpp"
 #include "stopwatch.hpp"
@@ -121,114 +122,155 @@ double answer_scale(const plate::Problem& p) {
 
 
 // Every option, as given or by default; the handles of those whose presence changes the run.
+// The defaults are the paper's problem, as reference/paper_numbers.csv states it (paper_numbers.hpp).
 struct Options {
-  int n = 4;
-  double lx = 1.0, ly = 1.0;
-  std::string obstacle = "cylinder", load = "0", scheme = "exact", sampling = "edge", edge = "auto", edge_rows = "auto",
+  int n = static_cast<int>(plate::paper::kSide / plate::paper::kH + 0.5);
+  double lx = plate::paper::kSide, ly = plate::paper::kSide;
+  std::string obstacle = "cylinder", load = plate::fmt("%.17g", plate::paper::kLoad), scheme = "exact", sampling = "edge", edge = "auto", edge_rows = "auto",
               symmetry = "auto", estimate = "auto";
-  double R = 0.0625, radius = 0.25, nu = plate::kPoissonRatio;  // the paper's cylinder (a test holds these to reference/)
-  std::string centre = "0.5,0.5";
+  double R = plate::paper::kObstacleHeight, radius = plate::paper::kObstacleRadius, nu = plate::kPoissonRatio;
+  std::string centre = plate::fmt("%.17g", plate::paper::kObstacleCx) + "," + plate::fmt("%.17g", plate::paper::kObstacleCy);
   plate::SolveOptions opt;
   double eps_fixed = 0;
   std::vector<std::string> points;
   std::string csv_path, json_path, line_csv_path;
   bool rate = false, quiet = false, no_globalise = false, no_nested = false;
-  CLI::Option *eps_opt = nullptr, *eps_start_opt = nullptr, *eps_min_opt = nullptr, *tol_opt = nullptr,
-              *max_iter_opt = nullptr, *n_opt = nullptr, *sampling_opt = nullptr, *edge_opt = nullptr, *csv_opt = nullptr,
-              *edge_rows_opt = nullptr, *symmetry_opt = nullptr, *json_opt = nullptr, *line_csv_opt = nullptr;
+  CLI::Option *eps_opt = nullptr, *tol_opt = nullptr, *max_iter_opt = nullptr, *csv_opt = nullptr, *json_opt = nullptr,
+              *line_csv_opt = nullptr;
+  CLI::Option_group *grid = nullptr, *exact = nullptr, *penalty = nullptr;
 };
 
+// The options in groups by what they belong to, so that a scheme refuses by name the options of the
+// groups it has no use for (refuse_group below), and --help lists them so.
 void add_options(CLI::App& app, Options& o) {
   app.get_formatter()->column_width(34);
-  o.n_opt = app.add_option("-n,--cells", o.n, "cells along x; the mesh size is h = lx / n")
-      ->check(kCellCount)
-      ->capture_default_str();
-  app.add_option("--lx", o.lx, "width of the rectangle")->check(kFinitePositive)->capture_default_str();
-  app.add_option("--ly", o.ly, "height of the rectangle (a whole number of cells)")
-      ->check(kFinitePositive)
-      ->capture_default_str();
-  app.add_option("--obstacle", o.obstacle,
-                 "'cylinder' (height R on the disk of --radius around --centre, no constraint outside) "
-                 "or an expression in x, y (muparser; 'inf' is infinity: -inf means no constraint)")
-      ->capture_default_str();
-  app.add_option("-R,--obstacle-height", o.R, "height R of the cylinder")->check(kFinite)->capture_default_str();
-  app.add_option("--radius", o.radius, "radius of the cylinder")->check(kFinitePositive)->capture_default_str();
-  app.add_option("--centre", o.centre, "centre of the cylinder, 'x,y'")->capture_default_str();
-  app.add_option("--load", o.load, "load f(x, y): a number or an expression in x, y")->capture_default_str();
   app.add_option("--scheme", o.scheme,
-                     "exact: no penalty, the constraint held exactly (primal-dual active sets for nodes, a dual "
-                     "active-set method for any other sampling), certified; nonlinear: penalty scheme (3a), "
-                     "refactorised when the contact set changes; linear: penalty scheme (5a), one factorisation per "
-                     "eps, slow at small eps (its answers often fail the error bound); semi-analytic: no grid, the "
-                     "cylinder's scene only: a line load on the rim in a Fourier series and biharmonic series fitted "
-                     "to the clamped edge (about 13 digits in max w; exit 3 if the contact is not the whole rim)")
-          ->check(CLI::IsMember({"linear", "nonlinear", "exact", "semi-analytic"}))
-          ->capture_default_str();
-  o.sampling_opt = app.add_option("--sampling", o.sampling,
-                 "where w >= phi is imposed: edge (points on the obstacle's edge, weighted by arc length, and the "
-                 "grid nodes), edge-gauss (edge points and Gauss points), gauss (4x4 Gauss points per element, (8) "
-                 "as printed), nodes (grid nodes, weight h^2)")
+                 "exact: no penalty, the constraint held exactly (primal-dual active sets for nodes, a dual "
+                 "active-set method for any other sampling), certified; nonlinear: penalty scheme (3a), "
+                 "refactorised when the contact set changes; linear: penalty scheme (5a), one factorisation per "
+                 "eps, slow at small eps (its answers often fail the error bound); semi-analytic: no grid, the "
+                 "cylinder's scene only: a line load on the rim in a Fourier series and biharmonic series fitted "
+                 "to the clamped edge (about 13 digits in max w; exit 3 if the contact is not the whole rim)")
+      ->check(CLI::IsMember({"linear", "nonlinear", "exact", "semi-analytic"}))
+      ->capture_default_str();
+
+  CLI::Option_group* scene = app.add_option_group("The scene", "what is solved, whatever the scheme");
+  scene->add_option("--lx", o.lx, "width of the rectangle")->check(kFinitePositive)->capture_default_str();
+  scene->add_option("--ly", o.ly, "height of the rectangle (a whole number of cells)")->check(kFinitePositive)->capture_default_str();
+  scene->add_option("--obstacle", o.obstacle,
+                    "'cylinder' (height R on the disk of --radius around --centre, no constraint outside) "
+                    "or an expression in x, y (muparser; 'inf' is infinity: -inf means no constraint)")
+      ->capture_default_str();
+  scene->add_option("-R,--obstacle-height", o.R, "height R of the cylinder")->check(kFinite)->capture_default_str();
+  scene->add_option("--radius", o.radius, "radius of the cylinder")->check(kFinitePositive)->capture_default_str();
+  scene->add_option("--centre", o.centre, "centre of the cylinder, 'x,y'")->capture_default_str();
+  scene->add_option("--load", o.load, "load f(x, y): a number or an expression in x, y")->capture_default_str();
+
+  o.grid = app.add_option_group("The grid and its rows", "schemes exact, nonlinear and linear");
+  o.grid->add_option("-n,--cells", o.n, "cells along x; the mesh size is h = lx / n")->check(kCellCount)->capture_default_str();
+  o.grid->add_option("--sampling", o.sampling,
+                     "where w >= phi is imposed: edge (points on the obstacle's edge, weighted by arc length, and the "
+                     "grid nodes), edge-gauss (edge points and Gauss points), gauss (4x4 Gauss points per element, (8) "
+                     "as printed), nodes (grid nodes, weight h^2)")
       ->check(CLI::IsMember({"edge", "edge-gauss", "gauss", "nodes"}))
       ->capture_default_str();
-  o.edge_opt = app.add_option("--edge", o.edge,
-                 "the obstacle's edge for edge sampling: auto (the cylinder's rim; none for an expression), none "
-                 "(interior samples alone), circle:cx,cy,r, or polygon:x1,y1;x2,y2;... (about one point per h)")
+  o.grid->add_option("--edge", o.edge,
+                     "the obstacle's edge for edge sampling: auto (the cylinder's rim; none for an expression), none "
+                     "(interior samples alone), circle:cx,cy,r, or polygon:x1,y1;x2,y2;... (about one point per h)")
       ->capture_default_str();
-  o.edge_rows_opt = app.add_option("--edge-rows", o.edge_rows,
-                 "how edge sampling constrains the edge: auto (spline on a circle, points on a polygon), points (one "
-                 "row per point, about a cell apart: the line load scatters by some 10 %), spline (w averaged against "
-                 "cubic B-splines of the angle, knots h^(3/7) r^(4/7) apart: a line load that converges point by "
-                 "point), or spline:DEGREE[,CELLS] (degree 1 ... 5, knots CELLS cells apart if given)")
+  o.grid->add_option("--edge-rows", o.edge_rows,
+                     "how edge sampling constrains the edge: auto (on a circle, cubic B-spline averages where the plate "
+                     "touches all along an arc and points where the contact ends or the plate is free (D28); points on "
+                     "a polygon), points (one row per point, about a cell apart: the line load scatters by some 10 %), "
+                     "spline (periodic spline averages all round, knots h^(3/7) r^(4/7) apart), or "
+                     "spline:DEGREE[,CELLS] (degree 1 ... 5, knots CELLS cells apart if given)")
       ->capture_default_str();
-  o.symmetry_opt = app.add_option("--symmetry", o.symmetry,
-                 "exact scheme: auto (solve on the half or quarter of the plate that the scene's mirror lines "
-                 "x = lx/2, y = ly/2 leave, found by checking phi and f at every sample against its mirror image; "
-                 "the outputs are the whole plate's) or none (always the whole plate)")
-      ->check(CLI::IsMember({"auto", "none"}))
-      ->capture_default_str();
-  app.add_option("--estimate", o.estimate,
-                 "exact scheme: auto (an error bar on each answer's distance from the plate's own, from the grids "
-                 "n/8, n/4, n/2 that grid sequencing solves anyway: Richardson where the observed order is steady, "
-                 "else the last difference, marked NOT STEADY) or off")
-      ->check(CLI::IsMember({"auto", "off"}))
-      ->capture_default_str();
-  o.eps_opt = app.add_option("--eps", o.eps_fixed, "solve at this eps only (no continuation); every eps is in units of lx^4, so it means the same in any unit of length")->check(kFinitePositive);
-  o.eps_start_opt = app.add_option("--eps-start", o.opt.eps_start, "first eps of the continuation")
-      ->check(kFinitePositive)
-      ->capture_default_str()
-      ->excludes(o.eps_opt);
-  o.eps_min_opt = app.add_option("--eps-min", o.opt.eps_min, "smallest eps tried before the continuation is declared failed")
-      ->check(kFinitePositive)
-      ->capture_default_str()
-      ->excludes(o.eps_opt);
-  o.tol_opt = app.add_option("--tol", o.opt.tol,
-                 "OS, relative to the size of the answer (max |phi| at the samples, or the free plate's max |w| if larger): "
-                 "stop when steps, and successive eps levels, are within tol times that size (max over nodes); "
-                 "with --scheme exact the bound on every relative certificate entry (default there 1e-10)")
+  o.tol_opt = o.grid->add_option("--tol", o.opt.tol,
+                                 "OS, relative to the size of the answer (max |phi| at the samples, or the free plate's "
+                                 "max |w| if larger): stop when steps, and successive eps levels, are within tol times that "
+                                 "size (max over nodes); with --scheme exact the bound on every relative certificate entry "
+                                 "(default there 1e-10)")
       ->check(kFinitePositive)
       ->capture_default_str();
-  o.max_iter_opt = app.add_option("--max-iter", o.opt.max_iter, "iteration cap per eps level; reaching it is a failure")
+  o.max_iter_opt = o.grid->add_option("--max-iter", o.opt.max_iter, "iteration cap per eps level; reaching it is a failure")
       ->check(kIterationCap)
       ->capture_default_str();
-  app.add_option("--nu", o.nu, "Poisson's ratio for the bending moments")
-      ->check(kFinite & CLI::Range(-1.0, 0.5))
+  o.csv_opt = o.grid->add_option("--csv", o.csv_path, "write the nodal fields (CSV) here");
+
+  o.exact = app.add_option_group("The exact scheme", "--scheme exact");
+  o.exact->add_option("--symmetry", o.symmetry,
+                      "auto (solve on the half or quarter of the plate that the scene's mirror lines x = lx/2, y = ly/2 "
+                      "leave, found by checking phi and f at every sample against its mirror image; the outputs are the "
+                      "whole plate's) or none (always the whole plate)")
+      ->check(CLI::IsMember({"auto", "none"}))
       ->capture_default_str();
-  app.add_option("--point", o.points, "report w at 'x,y' (repeatable)");
-  o.csv_opt = app.add_option("--csv", o.csv_path, "write the nodal fields (CSV) here");
-  o.json_opt = app.add_option("--json", o.json_path, "write the summary (JSON) here");
-  o.line_csv_opt = app.add_option("--line-csv", o.line_csv_path,
-                 "write the line load q(theta) at the edge points (CSV) here; semi-analytic: at 720 fixed angles");
-  app.add_flag("--no-globalise", o.no_globalise,
-               "exact scheme: end with an error if the active set repeats, instead of the monotone fallback");
-  app.add_flag("--no-nested", o.no_nested, "exact scheme: start from an empty active set, not from the coarser grid");
-  app.add_flag("--rate", o.rate, "also compute lambda_1h and the linear scheme's contraction factors");
-  app.add_flag("-q,--quiet", o.quiet, "print nothing but errors");
+  o.exact->add_option("--estimate", o.estimate,
+                      "auto (an error bar on each answer's distance from the plate's own, from the grids n/8, n/4, n/2 "
+                      "that grid sequencing solves anyway (D29): Richardson where the observed order is steady, else the "
+                      "last differences, marked NOT STEADY) or off")
+      ->check(CLI::IsMember({"auto", "off"}))
+      ->capture_default_str();
+  o.exact->add_flag("--no-globalise", o.no_globalise, "end with an error if the active set repeats, instead of the monotone fallback");
+  o.exact->add_flag("--no-nested", o.no_nested, "start from an empty active set, not from the coarser grid");
+
+  o.penalty = app.add_option_group("The penalty schemes", "--scheme nonlinear or linear");
+  o.eps_opt = o.penalty->add_option("--eps", o.eps_fixed,
+                                    "solve at this eps only (no continuation); every eps is in units of lx^4, so it means "
+                                    "the same in any unit of length")
+      ->check(kFinitePositive);
+  o.penalty->add_option("--eps-start", o.opt.eps_start, "first eps of the continuation")
+      ->check(kFinitePositive)
+      ->capture_default_str()
+      ->excludes(o.eps_opt);
+  o.penalty->add_option("--eps-min", o.opt.eps_min, "smallest eps tried before the continuation is declared failed")
+      ->check(kFinitePositive)
+      ->capture_default_str()
+      ->excludes(o.eps_opt);
+  o.penalty->add_flag("--rate", o.rate, "also compute lambda_1h and the linear scheme's contraction factors");
+
+  CLI::Option_group* out = app.add_option_group("Outputs", "every scheme");
+  out->add_option("--nu", o.nu, "Poisson's ratio for the bending moments")->check(kFinite & CLI::Range(-1.0, 0.5))->capture_default_str();
+  out->add_option("--point", o.points, "report w at 'x,y' (repeatable)");
+  o.json_opt = out->add_option("--json", o.json_path, "write the summary (JSON) here");
+  o.line_csv_opt = out->add_option("--line-csv", o.line_csv_path,
+                                   "write the line load q(theta) at the edge points (CSV) here; semi-analytic: at 720 fixed angles");
+  out->add_flag("-q,--quiet", o.quiet, "print nothing but errors");
+}
+
+// Every option of the program, its groups' included, in the order --help lists them.
+std::vector<const CLI::Option*> all_options(const CLI::App& app) {
+  std::vector<const CLI::Option*> all = app.get_options();
+  for (const CLI::App* group : app.get_subcommands([](const CLI::App*) { return true; }))
+    for (const CLI::Option* opt : group->get_options()) all.push_back(opt);
+  return all;
+}
+
+// Throws std::invalid_argument naming the first option of `group` that was given: the scheme has
+// no use for any of them.
+void refuse_group(const CLI::Option_group* group, const std::string& why) {
+  for (const CLI::Option* opt : group->get_options())
+    if (opt->count()) throw std::invalid_argument(opt->get_name() + " has no meaning for " + why);
+}
+
+// The scene the options state, built once for every scheme: the cylinder (--obstacle cylinder,
+// its rim the edge unless --edge says otherwise) or an expression obstacle, and the load.
+plate::Scene scene_of(const Options& o) {
+  using namespace plate;
+  Scene s;
+  if (o.obstacle == "cylinder") {
+    const auto [cx, cy] = parse_pair("--centre", o.centre);
+    s = cylinder_scene(o.lx, o.ly, Cylinder{cx, cy, o.radius, o.R});
+  } else {
+    s = expression_scene(o.lx, o.ly, o.obstacle, "0");
+  }
+  if (o.edge != "auto") s.edge = parse_edge(o.edge);
+  return with_load(s, o.load);
 }
 
 // What to solve and how, once every option has been checked.
 struct Run {
+  plate::Scene scene;
   plate::Grid g;
-  plate::Field phi, f;
   plate::SamplingSpec spec;
   bool exact = false;
   plate::SolveOptions opt;
@@ -275,40 +317,24 @@ Run check(const Options& o) {
   r.g = make_grid(o.n, o.lx, o.ly);
   check_grid_size(r.g);
   check_outputs({{o.json_opt, o.json_path}, {o.csv_opt, o.csv_path}, {o.line_csv_opt, o.line_csv_path}});
-  r.spec = SamplingSpec{sampling_kind(o.sampling), {}};
-  if (o.obstacle == "cylinder") {
-    const auto [cx, cy] = parse_pair("--centre", o.centre);
-    if (!(cx - o.radius >= 0 && cx + o.radius <= r.g.lx() && cy - o.radius >= 0 && cy + o.radius <= r.g.ly()))
-      throw std::invalid_argument("--centre and --radius: the cylinder's disk (centre (" + fmt("%g", cx) + ", " + fmt("%g", cy) +
-                                  "), radius " + fmt("%g", o.radius) + ") does not lie inside the plate [0, " +
-                                  fmt("%g", r.g.lx()) + "] x [0, " + fmt("%g", r.g.ly()) + "]");
-    r.phi = cylinder(cx, cy, o.radius, o.R);
-    if (o.edge == "auto") r.spec.edge = circle_edge(cx, cy, o.radius);
-  } else {
-    r.phi = expression("--obstacle", o.obstacle);
-  }
-  if (o.edge != "auto") r.spec.edge = parse_edge(o.edge);
-  r.spec.rows = parse_edge_rows(o.edge_rows);
-  if (r.spec.rows.kind == EdgeRows::Kind::Splines && !(has_edge(r.spec.kind) && r.spec.edge.kind == EdgeCurve::Kind::Circle))
+  r.scene = scene_of(o);
+  r.spec = SamplingSpec{sampling_kind(o.sampling), parse_edge_rows(o.edge_rows)};
+  if (r.spec.rows.kind == EdgeRows::Kind::Splines && !(has_edge(r.spec.kind) && r.scene.edge.kind == EdgeCurve::Kind::Circle))
     throw std::invalid_argument("--edge-rows spline needs edge sampling of a circle (--sampling edge, the cylinder or --edge circle:...)");
   if (!o.line_csv_path.empty() && !has_edge(r.spec.kind))
     throw std::invalid_argument("--line-csv needs edge sampling (--sampling edge or edge-gauss)");
-  r.f = expression("--load", o.load);
   r.exact = o.scheme == "exact";
   r.opt = o.opt;
   r.opt.scheme = o.scheme == "linear" ? Scheme::Linear : Scheme::Nonlinear;
-  if (r.exact) {
-    for (const auto* opt : {o.eps_opt, o.eps_start_opt, o.eps_min_opt})
-      if (opt->count()) throw std::invalid_argument(opt->get_name() + " has no meaning for --scheme exact (there is no eps)");
-    if (o.rate) throw std::invalid_argument("--rate describes the linear scheme's contraction: it needs a penalty scheme");
-  } else if (o.no_globalise || o.no_nested || o.symmetry_opt->count()) {
-    throw std::invalid_argument("--no-globalise, --no-nested and --symmetry apply to --scheme exact only");
-  }
-  if (!r.exact && o.estimate != "auto")
-    throw std::invalid_argument("--estimate applies to --scheme exact only (the penalty schemes' error bound is their own)");
+  if (r.exact)
+    refuse_group(o.penalty, "--scheme exact (no eps: the constraint is held exactly)");
+  else
+    refuse_group(o.exact, "the penalty schemes (it applies to --scheme exact only)");
   r.use_mirrors = o.symmetry == "auto";
-  // The memory the model solved needs: the part the mirrors leave, for the exact scheme.
-  check_memory(r.exact && r.use_mirrors ? part_of(r.g, find_mirrors(r.g, r.spec, r.phi, r.f)) : r.g);
+  // The memory the model solved needs: the part the mirrors leave, for the exact scheme. A grid whose
+  // smallest part would not fit is refused first, before the mirrors are looked for on all its nodes.
+  if (r.exact && r.use_mirrors) check_memory(part_of(r.g, plate::Mirrors{r.g.nx % 2 == 0, r.g.ny % 2 == 0}));
+  check_memory(r.exact && r.use_mirrors ? part_of(r.g, find_mirrors(r.scene, r.g, r.spec)) : r.g);
   r.nu = o.nu;
   r.estimate = o.estimate == "auto";
   r.exact_opt.tol = o.tol_opt->count() ? o.opt.tol : r.exact_opt.tol;
@@ -330,7 +356,7 @@ Run check(const Options& o) {
 
 // The effective value of every option, given or default, so a run can be reproduced from its output.
 void echo(const CLI::App& app, const Options& o, Run& r) {
-  for (const auto* opt : app.get_options()) {
+  for (const auto* opt : all_options(app)) {
     if (opt->get_name() == "--help") continue;
     std::string value = opt->count() ? CLI::detail::join(opt->reduced_results(), " ") : opt->get_default_str();
     if (value.empty()) value = "(none)";
@@ -355,7 +381,7 @@ LevelAnswer level_answer(const plate::Problem& p, const plate::ExactResult& x, c
   a.min_w = extremum_of_w(p.grid, x.w, -1).value;
   a.force = (1 << (int(p.grid.mirror_x) + int(p.grid.mirror_y))) * p.sampling.weights.dot(x.lambda);
   Report scratch;
-  find_extremes(scratch, p, x.w, r.nu);
+  measure(scratch, p, x.w, r.nu);
   a.m12 = scratch.max_abs_m12.value;
   for (const auto& [px, py] : r.report.points) a.at_points.push_back(evaluate(p.grid, x.w, px, py).w);
   return a;
@@ -406,7 +432,7 @@ plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::Vec
   };
   std::vector<LevelAnswer> levels;
   if (r.estimate) r.exact_opt.on_level = [&](const Problem& p, const ExactResult& x) { levels.push_back(level_answer(p, x, r)); };
-  scene = solve_exact_scene(r.g, r.spec, r.phi, r.f, r.exact_opt, r.use_mirrors);
+  scene = solve_exact_scene(r.scene, r.g.nx, r.spec, r.exact_opt, r.use_mirrors);
   set_error_bars(r, levels);
   const ExactResult& exact = scene.result;
   SolveResult result;
@@ -445,8 +471,6 @@ plate::SolveResult solve_penalty(Run& r, const plate::Problem& problem, double L
                      fmt(", more than tol = %.3g (the penalty's own error at eps = ", r.opt.tol) +
                      fmt("%g); use a smaller --eps-min or --scheme exact", result.eps / L4);
   }
-  r.report.config.emplace_back("tol (absolute: --tol times the answer's size)", fmt("%.6g", r.opt.tol));
-  r.report.config.emplace_back("eps unit (lx^4)", fmt("%.6g", L4));
   return result;
 }
 
@@ -470,19 +494,26 @@ int solve_and_write(const Options& o, Run& r, plate::Clock::time_point t0) {
     result = solve_exactly(r, scene, xi, progress);
   } else {
     progress.stage("assembling " + std::to_string(r.g.unknowns()) + " unknowns");
-    penalised = make_problem(r.g, r.spec, r.phi, r.f);
+    penalised = make_problem(r.scene, r.g, r.spec);
     r.report.seconds_assemble = seconds_since(t0);
     progress.stage("assembled; solving (" + o.scheme + " scheme, " + o.sampling + " sampling)");
     r.opt.tol *= answer_scale(*penalised);
+    // What is solved, after scaling: echoed before the solve, as the options were.
+    const std::vector<std::pair<std::string, std::string>> solved = {
+        {"tol (absolute: --tol times the answer's size)", fmt("%.6g", r.opt.tol)}, {"eps unit (lx^4)", fmt("%.6g", L4)}};
+    for (const auto& kv : solved) {
+      r.report.config.push_back(kv);
+      if (!o.quiet) std::cout << "  " << kv.first << " = " << kv.second << "\n";
+    }
     result = solve_penalty(r, *penalised, L4, xi, progress);
   }
   const Problem& problem = r.exact ? scene.whole() : *penalised;
   progress.stage(result.converged ? "solved; writing the outputs" : "not converged; writing the outputs");
-  const NodalFields nodes = nodal_fields(problem, result.w, r.phi, xi, o.nu);
+  const NodalFields nodes = nodal_fields(problem, result.w, xi, o.nu);
   r.report.xi = xi;
   r.report.line = line_force(problem, xi);
-  r.report.dip_below_edge = dip_below_edge(problem, result.w, r.phi);
-  find_extremes(r.report, problem, result.w, o.nu);
+  r.report.dip_below_edge = dip_below_edge(problem, result.w);
+  measure(r.report, problem, result.w, o.nu);
   if (o.rate) r.report.lambda1h = smallest_eigenpair(problem.K, problem.M).lambda;
   r.report.problem = &problem;
   r.report.result = &result;
@@ -513,27 +544,12 @@ int solve_and_write(const Options& o, Run& r, plate::Clock::time_point t0) {
 // Options that belong to a grid or a penalty are refused by name rather than ignored.
 int solve_semi_analytic(const CLI::App& app, const Options& o, plate::Clock::time_point t0) {
   using namespace plate;
-  for (const CLI::Option* opt : {o.n_opt, o.sampling_opt, o.edge_opt, o.edge_rows_opt, o.csv_opt, o.eps_opt, o.eps_start_opt,
-                                 o.eps_min_opt, o.tol_opt, o.max_iter_opt, o.symmetry_opt})
-    if (opt->count())
-      throw std::invalid_argument(opt->get_name() + " has no meaning for --scheme semi-analytic (no grid, no eps)");
-  if (o.rate || o.no_globalise || o.no_nested)
-    throw std::invalid_argument("--rate, --no-globalise and --no-nested have no meaning for --scheme semi-analytic");
-  if (o.estimate != "auto")
-    throw std::invalid_argument("--estimate has no meaning for --scheme semi-analytic (its bars are the series' own)");
+  for (const CLI::Option_group* g : {o.grid, o.exact, o.penalty})
+    refuse_group(g, "--scheme semi-analytic (no grid, no eps; its bars are the series' own)");
   if (o.obstacle != "cylinder")
     throw std::invalid_argument("--obstacle: --scheme semi-analytic models the cylinder only, not '" + o.obstacle + "'");
-  size_t used = 0;
-  double load = NAN;
-  try {
-    load = std::stod(o.load, &used);
-  } catch (const std::exception&) {
-  }
-  if (used != o.load.size() || !std::isfinite(load))
-    throw std::invalid_argument("--load: --scheme semi-analytic models a uniform load, a number, not '" + o.load + "'");
-  const auto [cx, cy] = parse_pair("--centre", o.centre);
-  const RimScene scene{o.lx, o.ly, cx, cy, o.radius, o.R, load};
-  check(scene);
+  const Scene scene = scene_of(o);
+  rim_scene(scene);  // the series models a cylinder under a uniform load; it refuses anything else by name
   check_outputs({{o.json_opt, o.json_path}, {o.line_csv_opt, o.line_csv_path}});
   RimReport report;
   for (const auto& p : o.points) report.points.push_back(parse_pair("--point", p));
@@ -542,7 +558,7 @@ int solve_semi_analytic(const CLI::App& app, const Options& o, plate::Clock::tim
       throw std::invalid_argument("--point " + std::to_string(x) + "," + std::to_string(y) + " is outside the plate");
   const std::vector<std::string> modelled = {"--lx", "--ly", "--obstacle", "--obstacle-height", "--radius", "--centre",
                                             "--load", "--scheme", "--nu", "--point", "--json", "--line-csv", "--quiet"};
-  for (const auto* opt : app.get_options()) {
+  for (const auto* opt : all_options(app)) {
     if (std::find(modelled.begin(), modelled.end(), opt->get_name()) == modelled.end()) continue;
     std::string value = opt->count() ? CLI::detail::join(opt->reduced_results(), " ") : opt->get_default_str();
     if (opt->get_expected_max() == 0) value = opt->count() ? "true" : "false";

@@ -71,7 +71,7 @@ std::string uniform_load_csv(int finest) {
     << "0," << rim_digits(exact) << ",,,\n";
   const Field none = [](double, double) { return -1.0; }, one = [](double, double) { return 1.0; };
   for (int n = 16; n <= finest; n *= 2) {
-    const Problem p = make_problem(make_grid(n), SamplingKind::Nodes, none, one);
+    const Problem p = make_problem(expression_scene(1, 1, "-1", "1"), make_grid(n), SamplingSpec{SamplingKind::Nodes});
     Cholesky chol;
     chol.factorize(p.K);
     VectorXd solved = chol.solve(p.F), none;
@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
   if (const int status = parse_options(app, argc, argv, "rim_series"); status >= 0) return status;
   try {
     if (finest & (finest - 1)) throw std::invalid_argument("--finest must be 16 times a power of two (16, 32, ...)");
-    const RimAnswer a = rim_answer(rim_scene(read_paper_scene(reference)), levels);
+    const RimAnswer a = rim_answer(paper_scene(), levels);
     write_file_atomically(out + "/rim_series.csv", table_csv(a));
     write_file_atomically(out + "/rim_series.md", table_md(a));
     write_file_atomically(out + "/rim_answer.csv", answer_csv(a));

@@ -163,17 +163,15 @@ int main(int argc, char** argv) {
   try {
     const auto table = read_paper_table(reference + "/paper_table.csv");
     const auto numbers = read_paper_numbers(reference + "/paper_numbers.csv");
-    const PaperScene scene = paper_scene(numbers);
-    const int n_paper = scene.cells;
-    const Field phi = scene.obstacle();
-    const double load = published(numbers, "load");
+    const Scene scene = paper_scene();
+    const int n_paper = paper_cells();
     std::vector<int> grids = {n_paper};
     grids.insert(grids.end(), fine.begin(), fine.end());
     std::vector<Case> paper_cases, fine_cases;
     for (int n : grids)
       for (SamplingKind kind : {SamplingKind::Gauss, SamplingKind::Nodes}) {
         std::cerr << "table: h = 1/" << n << ", " << to_string(kind) << " sampling\n";
-        const Problem p = make_problem(make_grid(n), kind, phi, [load](double, double) { return load; });
+        const Problem p = make_problem(scene, make_grid(n), SamplingSpec{kind});
         Case c{n, kind, eps_limit(p), smallest_eigenpair(p.K, p.M).lambda, {}};
         for (const auto& row : table)
           c.runs.emplace_back(run(p, Scheme::Linear, row.tolerance, c.limit, c.lambda1h),

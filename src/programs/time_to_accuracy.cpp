@@ -44,7 +44,7 @@ struct Config {
 // The peer: gmsh and FreeFem++ on the cross-check's mesh of level n, timed as a whole.
 struct FreeFem {
   std::string geo, edp, work;
-  PaperScene scene;
+  Scene scene;
 };
 
 struct Run {
@@ -126,7 +126,7 @@ Run run_freefem_level(const FreeFem& ff, const Config& c, int n) {
   r.config = &c;
   r.n = n;
   const std::string msh = ff.work + "/tta_n" + std::to_string(n) + ".msh", points = ff.work + "/tta_points.txt";
-  write_points(points, {{ff.scene.cx, ff.scene.cy}});
+  write_points(points, {{ff.scene.cylinder->cx, ff.scene.cylinder->cy}});
   const auto t0 = Clock::now();
   gmsh_mesh(ff.geo, circle_numbers(ff.scene, n), msh);
   const nlohmann::json j = run_freefem(ff.edp, msh, scene_args(ff.scene, points), msh + ".json");
@@ -308,7 +308,7 @@ std::string csv(const std::vector<Run>& runs) {
 int main(int argc, char** argv) {
   CLI::App app{"time_to_accuracy: wall time of the plate program against its distance to the plate's answer (rim-contact series)"};
   std::string plate = "build/plate", limits = "results/rim_answer.csv", out = "results", reference = "reference";
-  FreeFem ff{"reference/square_with_circle.geo", "reference/contact_hct.edp", "build/tta-work", {}};
+  FreeFem ff{"reference/square_with_circle.geo", "reference/contact_hct.edp", "build/tta-work", paper_scene()};
   std::string peer = (std::filesystem::path(argv[0]).parent_path() / "peer_snesvi").string();
   int max_n = 1024, max_freefem = 16, ratio_n = 128, repeats = 3;
   app.add_option("--plate", plate, "the plate program")->check(CLI::ExistingFile)->capture_default_str();
@@ -342,8 +342,7 @@ int main(int argc, char** argv) {
         {"SNESVI ssls nodes", "", 256, false, "ssls"},
         {"FreeFEM HCT vertices", "", max_freefem, true, ""},  // no comma: the name is a CSV field
     };
-    ff.scene = read_paper_scene(reference);
-    const RimAnswer series = rim_answer(rim_scene(ff.scene));
+    const RimAnswer series = rim_answer(ff.scene);
     std::filesystem::create_directories(ff.work);
     std::filesystem::create_directories(out);
     const std::string json = (std::filesystem::temp_directory_path() / ("tta_" + std::to_string(getpid()) + ".json")).string();

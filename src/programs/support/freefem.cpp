@@ -53,16 +53,24 @@ void gmsh_mesh(const std::string& geo, const std::vector<std::pair<std::string, 
   run("gmsh", cmd.str(), msh + ".log");
 }
 
-std::string scene_args(const PaperScene& scene, const std::string& points_file) {
+namespace {
+const Cylinder& cylinder_of(const Scene& s) {
+  if (!s.cylinder) throw std::invalid_argument("FreeFEM's scripts model a cylinder, not '" + s.obstacle_text + "'");
+  return *s.cylinder;
+}
+}  // namespace
+
+std::string scene_args(const Scene& scene, const std::string& points_file) {
+  const Cylinder& c = cylinder_of(scene);
   std::ostringstream args;
   args.precision(17);
-  args << "-points " << quote(points_file) << " -R " << scene.height << " -cx " << scene.cx << " -cy " << scene.cy
-       << " -r " << scene.radius;
+  args << "-points " << quote(points_file) << " -R " << c.height << " -cx " << c.cx << " -cy " << c.cy << " -r " << c.radius;
   return args.str();
 }
 
-std::vector<std::pair<std::string, double>> circle_numbers(const PaperScene& scene, int n) {
-  return {{"n", n}, {"cx", scene.cx}, {"cy", scene.cy}, {"r", scene.radius}};
+std::vector<std::pair<std::string, double>> circle_numbers(const Scene& scene, int n) {
+  const Cylinder& c = cylinder_of(scene);
+  return {{"n", n}, {"lx", scene.lx}, {"ly", scene.ly}, {"cx", c.cx}, {"cy", c.cy}, {"r", c.radius}};
 }
 
 void write_points(const std::string& path, const std::vector<std::pair<double, double>>& points) {

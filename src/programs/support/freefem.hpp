@@ -22,10 +22,12 @@ inline constexpr const char* kFreefemCode = "freefem-hct";
 void gmsh_mesh(const std::string& geo, const std::vector<std::pair<std::string, double>>& numbers,
                const std::string& msh);
 
-// The script's arguments for the scene's obstacle: the points file, R, the circle's centre and radius.
-std::string scene_args(const PaperScene& scene, const std::string& points_file);
-// gmsh's numbers for the scene's circle, on the mesh of level n (4 n cells per quarter circle).
-std::vector<std::pair<std::string, double>> circle_numbers(const PaperScene& scene, int n);
+// The script's arguments for a cylinder scene's obstacle: the points file, R, the circle's centre
+// and radius. Throws std::invalid_argument if the scene's obstacle is not a cylinder.
+std::string scene_args(const Scene& scene, const std::string& points_file);
+// gmsh's numbers for the scene's rectangle and circle, on the mesh of level n (4 n cells per
+// quarter circle).
+std::vector<std::pair<std::string, double>> circle_numbers(const Scene& scene, int n);
 
 // The check points, as the script's -points file wants them: their number, then "x y" each.
 void write_points(const std::string& path, const std::vector<std::pair<double, double>>& points);

@@ -4,6 +4,7 @@
 
 #include "csv_table.hpp"
 #include "fields.hpp"
+#include "paper_numbers.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -56,23 +57,14 @@ double published(const std::map<std::string, double>& numbers, const std::string
   return it->second;
 }
 
-Field PaperScene::obstacle(double R) const { return cylinder(cx, cy, radius, R); }
+Scene paper_scene() { return paper_scene(paper::kObstacleHeight); }
 
-EdgeCurve PaperScene::rim() const { return circle_edge(cx, cy, radius); }
-
-PaperScene paper_scene(const std::map<std::string, double>& numbers) {
-  PaperScene s;
-  s.cx = published(numbers, "obstacle_cx");
-  s.cy = published(numbers, "obstacle_cy");
-  s.radius = published(numbers, "obstacle_radius");
-  s.height = published(numbers, "obstacle_height");
-  s.cells = static_cast<int>(std::lround(1.0 / published(numbers, "h")));
-  return s;
+Scene paper_scene(double R) {
+  return cylinder_scene(paper::kSide, paper::kSide, Cylinder{paper::kObstacleCx, paper::kObstacleCy, paper::kObstacleRadius, R},
+                        paper::kLoad);
 }
 
-PaperScene read_paper_scene(const std::string& reference_dir) {
-  return paper_scene(read_paper_numbers(reference_dir + "/paper_numbers.csv"));
-}
+int paper_cells() { return static_cast<int>(std::lround(paper::kSide / paper::kH)); }
 
 double plate_constant(const std::string& reference_dir, const std::string& key) {
   const std::string path = reference_dir + "/plate_constants.csv";

@@ -5,8 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "assemble.hpp"
-#include "edge.hpp"
+#include "scene.hpp"
 
 namespace plate {
 
@@ -27,18 +26,12 @@ std::map<std::string, double> read_paper_numbers(const std::string& path);
 double published(const std::map<std::string, double>& numbers, const std::string& key,
                  const std::string& source = "reference/paper_numbers.csv");
 
-// The paper's experiment as reference/paper_numbers.csv states it: the one place where its obstacle
-// (height R on the closed disk (10), no constraint outside) and its grid are spelled.
-struct PaperScene {
-  double cx = 0, cy = 0, radius = 0, height = 0;
-  int cells = 0;  // n = 1/h squares per side
-  Field obstacle() const { return obstacle(height); }
-  Field obstacle(double R) const;  // the same disk at another height
-  EdgeCurve rim() const;           // the circle (10), where the plate touches
-};
-PaperScene paper_scene(const std::map<std::string, double>& numbers);
-// Reads reference_dir/paper_numbers.csv.
-PaperScene read_paper_scene(const std::string& reference_dir);
+// The paper's experiment as reference/paper_numbers.csv states it (CMake bakes its numbers into
+// paper_numbers.hpp: the one place they are spelled): the unit square, f = 0, the obstacle of
+// height R on the closed disk (10), no constraint outside; its rim is the scene's edge.
+Scene paper_scene();
+Scene paper_scene(double R);  // the same cylinder at height R
+int paper_cells();            // n = 1/h squares per side
 
 // A published constant of the clamped plate (uniform_centre, point_centre, lambda1), from
 // reference_dir/plate_constants.csv. Throws std::runtime_error naming a missing file or key.

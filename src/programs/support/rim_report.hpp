@@ -23,9 +23,6 @@ struct RimReport {
   double seconds_total = 0;
 };
 
-// The paper's scene (reference/paper_numbers.csv) as the series' scene: unit square, f = 0.
-inline RimScene rim_scene(const PaperScene& p) { return RimScene{1, 1, p.cx, p.cy, p.radius, p.height, 0}; }
-
 // A value of the series to the digits its bar leaves (the last printed at least the bar), and never
 // below 1000 u |v|, the floor of the series' bars (rim_answer), where libm's last bits could show.
 std::string rim_digits(double v, double bar = 0);

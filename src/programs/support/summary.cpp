@@ -45,7 +45,9 @@ Extremes extremes(const NodalFields& f) {
 }
 }  // namespace
 
-void find_extremes(Report& r, const Problem& p, const VectorXd& w, double nu) {
+void measure(Report& r, const Problem& p, const VectorXd& w, double nu) {
+  r.w_at_points.clear();
+  for (const auto& [x, y] : r.points) r.w_at_points.push_back(evaluate(p.grid, w, x, y).w);
   r.max_w = extremum_of_w(p.grid, w, +1);
   r.min_w = extremum_of_w(p.grid, w, -1);
   // |m12| = (1 - nu) |w_xy|, continuous for these elements: from the best node, by the pattern.
@@ -179,7 +181,8 @@ std::string error_bars_text(const Report& r) {
   for (const auto& [name, b] : r.bars) {
     o << "  " << name << " = " << num(b.value) << " +- " << fmt("%.2g", b.bar) << "  (";
     if (b.basis == "richardson") o << "Richardson, order " << fmt("%.2f", b.order) << ", steady";
-    else if (b.basis == "last difference") o << "NOT STEADY: the last difference, order " << fmt("%.2f", b.order);
+    else if (b.basis == "last difference")
+      o << "NOT STEADY: the last difference" << (std::isfinite(b.order) ? ", order " + fmt("%.2f", b.order) : std::string(", one grid before"));
     else if (b.basis != "none") o << "NOT STEADY: the values swing; the larger of the last two differences";
     else o << "none";
     o << ")\n";
@@ -213,8 +216,8 @@ std::string summary_json(const Report& r) {
   j["max_w_nodes"] = number(e.max_w);
   j["max_w_nodes_at"] = {number(f.x[e.argmax_w]), number(f.y[e.argmax_w])};
   j["w_at_points"] = Json::array();
-  for (const auto& [x, y] : r.points)
-    j["w_at_points"].push_back({{"x", number(x)}, {"y", number(y)}, {"w", number(evaluate(p.grid, s.w, x, y).w)}});
+  for (size_t k = 0; k < r.points.size(); ++k)
+    j["w_at_points"].push_back({{"x", number(r.points[k].first)}, {"y", number(r.points[k].second)}, {"w", number(r.w_at_points.at(k))}});
   j["total_contact_force"] = number(total_contact_force(p, xi));
   j["max_xi_samples"] = number(xi.size() ? xi.maxCoeff() : 0.0);
   j["max_xi_nodes"] = number(e.max_xi);
@@ -260,8 +263,8 @@ std::string summary_text(const Report& r) {
     << num(r.min_w.value) << " at (" << num(r.min_w.x) << ", " << num(r.min_w.y)
     << ") (of w_h over the plate; the largest nodal value is " << num(e.max_w) << " at (" << num(f.x[e.argmax_w]) << ", "
     << num(f.y[e.argmax_w]) << "))\n";
-  for (const auto& [x, y] : r.points)
-    o << "w(" << num(x) << ", " << num(y) << ") = " << num(evaluate(r.problem->grid, s.w, x, y).w) << "\n";
+  for (size_t k = 0; k < r.points.size(); ++k)
+    o << "w(" << num(r.points[k].first) << ", " << num(r.points[k].second) << ") = " << num(r.w_at_points.at(k)) << "\n";
   o << "total contact force = " << num(total_contact_force(*r.problem, xi)) << ", max xi at nodes = "
     << num(e.max_xi) << ", max |m12| = " << num(r.max_abs_m12.value) << " at (" << num(r.max_abs_m12.x) << ", "
     << num(r.max_abs_m12.y) << ") (at the nodes " << num(e.max_abs_m12) << "), contact nodes: " << e.contact.size() << "\n";

@@ -23,6 +23,7 @@ struct Report {
   const Certificate* certificate = nullptr;       // the exact solver's; null for the penalty schemes
   double certificate_tol = 0;
   std::vector<std::pair<double, double>> points;  // where the user asked for w
+  std::vector<double> w_at_points;                 // w_h there (measure() fills it)
   double lambda1h = -1;                           // < 0: not computed
   double seconds_assemble = 0, seconds_total = 0;
   double eps_unit = 1;  // eps is printed divided by this, in the user's unit (plate: lx^4)
@@ -41,8 +42,9 @@ struct Report {
   std::vector<int> bar_grids;
   std::string bar_note;
 };
-// The extremes of w_h and of |m12| over the plate (not over the nodes), into r.
-void find_extremes(Report& r, const Problem& p, const VectorXd& w, double nu);
+// What the report states of the answer w, computed once before it is written: the extremes of w_h
+// and of |m12| over the plate (not over the nodes), and w_h at r.points.
+void measure(Report& r, const Problem& p, const VectorXd& w, double nu);
 
 // The angles at which --line-csv gives a spline line load (and the semi-analytic scheme its own).
 constexpr int kLineCsvAngles = 720;
