@@ -1,7 +1,7 @@
 # Kovtunenko (1994), a clamped plate over a rigid obstacle: build, test, reproduce.
 # `make all` and `make test` install what is missing (make deps) and build first.
 BUILD ?= build
-JOBS  ?= $(shell nproc 2>/dev/null || echo 2)
+JOBS  ?= $(shell getconf _NPROCESSORS_ONLN 2>/dev/null || echo 2)
 DRIVERS := $(BUILD)/table $(BUILD)/fig1 $(BUILD)/fig2 $(BUILD)/contraction $(BUILD)/hard_cases $(BUILD)/bench $(BUILD)/peer_snesvi \
            $(BUILD)/micro_bench $(BUILD)/continuum $(BUILD)/time_to_accuracy $(BUILD)/prose_numbers $(BUILD)/compare_tables $(BUILD)/rim_series \
            $(BUILD)/liftoff
@@ -45,9 +45,19 @@ VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread libmuparser-d
 # scripts/step.sh also says, when it ends, how long it took (and logs it to build/step-times.log).
 say = @printf '\n== make: %s (about %s)\n' $(1) $(2)
 
-.PHONY: all test test-fast deps build results paper document crosscheck hard-cases continuum rim-series liftoff bench check-results clean help FORCE
+.PHONY: all steps test test-fast deps build results paper document crosscheck hard-cases continuum rim-series liftoff bench check-results clean help FORCE
 
-all: build results rim-series continuum liftoff crosscheck hard-cases bench paper ## build, then every result, figure, benchmark and the document (about 25 minutes here, 2 cores)
+# `make all` runs the steps that share no output side by side, one core each (their BLAS and OpenMP
+# threads would only spin against each other), then the benchmarks alone on every core, then the
+# document, and ends with a table of what each step cost (scripts/step_report.sh).
+ALL_START := $(shell date +%s)
+all: build ## build, then every result, figure, benchmark and the document (the steps side by side on the cores found)
+	OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 $(MAKE) --no-print-directory -j $(JOBS) --output-sync=target steps
+	$(MAKE) --no-print-directory bench
+	$(MAKE) --no-print-directory paper
+	@scripts/step_report.sh $$(( $$(date +%s) - $(ALL_START) ))
+
+steps: results rim-series continuum liftoff crosscheck hard-cases
 
 help: ## list the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 12

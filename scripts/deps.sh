@@ -10,7 +10,7 @@
 set -euo pipefail
 
 packages=(
-  g++ make cmake pkg-config
+  g++ make cmake pkg-config time  # time: GNU time, which scripts/step.sh reads each step's cost with
   libeigen3-dev libsuitesparse-dev libmuparser-dev libcli11-dev nlohmann-json3-dev
   libopenblas0-pthread libblas3  # libblas3: the reference BLAS, for the FreeFEM out-of-memory test
   libgtest-dev libgmock-dev libbenchmark-dev
