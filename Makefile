@@ -19,7 +19,7 @@ RESULTS   := $(TABLES) $(CONTRACTION) $(FIG1_DATA) $(FIG2_DATA) $(FIGURES)
 CROSSCHECK := results/crosscheck.md results/crosscheck.csv results/crosscheck_agreement.csv results/crosscheck_rim.csv \
               results/crosscheck_timings.csv
 RIM_FIGURE := results/rim.svg results/rim.png
-CROSSCHECK_PENALTY := results/crosscheck_penalty.md results/crosscheck_penalty_table.csv results/crosscheck_penalty_eps.csv \
+CROSSCHECK_PENALTY := results/crosscheck_penalty.md results/crosscheck_penalty_table.csv results/crosscheck_penalty_eps.csv results/crosscheck_penalty_limits.csv \
                       results/crosscheck_penalty_fig2.csv
 PENALTY_FIGURE := results/crosscheck_penalty_fig2.svg results/crosscheck_penalty_fig2.png
 # The paper's table as a plot: the published counts, ours and FreeFEM's, gathered by crosscheck_penalty.
@@ -191,7 +191,7 @@ results/versions.csv: scripts/deps.sh | deps
 	@test $$(grep -c . $@.tmp) -eq $$(( $(words $(VERSIONED)) + 1 )) || { echo "versions.csv: dpkg-query did not find every package of VERSIONED" >&2; rm -f $@.tmp; exit 1; }
 	mv $@.tmp $@
 
-$(NUMBERS) &: $(BUILD)/prose_numbers $(RESULTS) $(RIM_SERIES) $(CONTINUUM_DATA) results/liftoff.csv $(CROSSCHECK) $(HARD_CASES) $(BENCH) results/versions.csv \
+$(NUMBERS) &: $(BUILD)/prose_numbers $(RESULTS) $(RIM_SERIES) $(CONTINUUM_DATA) results/liftoff.csv $(CROSSCHECK) results/crosscheck_penalty_limits.csv $(HARD_CASES) $(BENCH) results/versions.csv \
                $(wildcard results/rebuild_times.csv) reference/plate_constants.csv
 	$(BUILD)/prose_numbers --out results
 

@@ -4,7 +4,8 @@
 // quarter of it, and a vertex at the centre; each n doubled refines every patch the same way, so
 // the errors shrink at a steady rate.
 //   gmsh -2 -format msh22 -setnumber n 4 [-setnumber lx 2 -setnumber ly 1 -setnumber cx 1 ...] square_with_circle.geo -o mesh.msh
-// Physical tags, read by FreeFEM's gmshload as labels: 1 = clamped boundary, 2 = circle, 1 = surface.
+// Physical tags, read by FreeFEM's gmshload as labels: 1 = clamped boundary, 2 = circle; and as
+// regions: 1 = inside the circle, 2 = outside (penalty_hct.edp -sampling disk integrates over region 1).
 If (!Exists(n))
   n = 2;
 EndIf
@@ -63,4 +64,5 @@ Transfinite Surface{8} = {8, 12, 13, 9} Alternate;
 Transfinite Surface{9} = {9, 13, 10, 6} Alternate;
 Physical Curve(1) = {9, 10, 11, 12};
 Physical Curve(2) = {5, 6, 7, 8};
-Physical Surface(1) = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+Physical Surface(1) = {1, 2, 3, 4, 5};
+Physical Surface(2) = {6, 7, 8, 9};

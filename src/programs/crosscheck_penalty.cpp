@@ -1,10 +1,11 @@
 // crosscheck_penalty: the paper's own method, the penalty (2) with the schemes (3a) and (5a), run by
 // an independent code (reference/penalty_hct.edp: FreeFEM, HCT triangles on gmsh meshes) beside
-// this one. Writes results/crosscheck_penalty.md and three tables:
+// this one. Writes results/crosscheck_penalty.md and four tables:
 //   crosscheck_penalty_table.csv  (5a)'s iterations for the paper's eight tolerances: the paper,
 //                                 GLT, ours (results/table.csv) and FreeFEM on its two coarsest meshes;
-//   crosscheck_penalty_eps.csv    w_eps at fixed eps = 1e-3 ... 1e-7 on both codes' refinement
-//                                 sequences, their limits compared, and w_eps -> w at the rate eps;
+//   crosscheck_penalty_eps.csv    w_eps at fixed eps = 1e-3 ... 1e-8, the penalty integrated over the
+//                                 true disk (D30), on both codes' refinement sequences, their limits
+//                                 compared (crosscheck_penalty_limits.csv); and w_eps -> w at the rate eps;
 //   crosscheck_penalty_fig2.csv   Fig. 2's quantities against R from FreeFEM beside results/fig2.csv.
 // Run by `make crosscheck`; exit 3 when a check fails. `crosscheck_penalty --help` lists the options.
 #include <CLI/CLI.hpp>
@@ -26,7 +27,10 @@
 #include "exit_codes.hpp"
 #include "format.hpp"
 #include "freefem.hpp"
+#include "extrema.hpp"
+#include "mirror.hpp"
 #include "norms.hpp"
+#include "penalty_integral.hpp"
 #include "published.hpp"
 #include "richardson.hpp"
 #include "verdict.hpp"
@@ -37,18 +41,22 @@ namespace {
 
 struct Setup {
   std::vector<int> table_levels = {1, 2};      // the .geo's n (4 n cells per quarter circle): the coarsest
-  // Fixed eps: the same continuum problem (the penalty integrated over the disk) discretised by both
-  // codes at their quadrature points, FreeFEM on the stiffness quadrature, ours on Gauss points.
-  std::vector<int> eps_levels = {1, 2, 4, 8};   // FreeFEM's sequence
-  std::vector<int> eps_ns = {16, 32, 64, 128};  // ours
-  std::vector<double> eps_values = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
+  // Fixed eps: the same continuum problem, the penalty integrated over the true disk (D30), in both
+  // codes: FreeFEM over the triangles inside the circle and the circular segments beyond their chords,
+  // ours by the rule that follows the circle and the curve w = phi through each square.
+  std::vector<int> eps_levels = {2, 4, 8, 16};       // FreeFEM's sequence
+  std::vector<int> eps_ns = {32, 64, 128, 256, 512};  // ours, on the part of the plate its mirrors leave
+  std::vector<double> eps_values = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
+  // Ours solves with the obstacle's height times 1 + this: a check that can fail must say "differ"
+  // when one code's scene is changed a little (tests/test_crosscheck_penalty.cpp).
+  double perturb = 0;
   // The rate w_eps -> w: against each code's exact answer with the same discrete constraint (FreeFEM:
   // the vertices, as contact_hct.edp; ours: the nodes), one grid each, eps down to 1e-10. (Gauss
   // sampling puts many samples where the exact multiplier is tiny, and its w_eps reaches the rate
   // only below eps = 1e-10 at h = 1/64.)
   int rate_level = 4, rate_n = 64;
   std::vector<double> rate_eps = {1e-6, 1e-7, 1e-8, 1e-9, 1e-10};
-  std::string parts = "table,eps,fig2";
+  std::string parts = "table,eps,rate,fig2";
   int fig2_level = 4;       // FreeFEM's mesh for Fig. 2: h about 1/13
   double fig2_eps = 1e-10;  // as results/fig2.csv
   std::string geo = "reference/square_with_circle.geo", penalty = "reference/penalty_hct.edp";
@@ -110,6 +118,7 @@ int ours_iterations(const CsvTable& t, const std::string& sampling, double tol) 
 }
 
 // ---- 2. fixed eps ----------------------------------------------------------------------------
+constexpr const char* kOurDiskCode = "bfs-disk";  // ours, the penalty over the true disk (D30)
 struct EpsRun {
   std::string code;
   int cells = 0;
@@ -199,38 +208,48 @@ struct EpsPart {
   bool rate_ok = true, ok = true;
 };
 void run_fixed_eps(const Setup& s, EpsPart& part) {
-  auto& eps_runs = part.eps_runs;
-  auto& comparisons = part.comparisons;
-  bool& all_ok = part.ok;
   std::cerr << "crosscheck_penalty: fixed eps (" << s.eps_values.size() << " values, FreeFEM and this code)\n";
   const Scene& sc = s.scene;
-  // Each grid's path of exact w_eps, eps = 0.1, 0.01, ... down to the smallest eps here, once.
-  std::vector<std::pair<Problem, std::vector<VectorXd>>> paths;
-  for (int n : s.eps_ns) paths.push_back(our_path(sc, n, SamplingKind::Gauss, s.eps_values.back()));
-  for (double eps : s.eps_values) {
-    std::vector<double> fw, ff, fwn, ffn, ow, of, own, ofn;
+  const Scene ours = at_height(sc, sc.cylinder->height * (1 + s.perturb));
+  // Ours: each grid's path of w_eps through the eps values, once. A value's round-off: the floor of
+  // Newton's corrections (1e-12 of w, penalty_integral.cpp), and through the penalty eps^-1 times that
+  // over the band where it acts.
+  struct OurValues { std::vector<double> w, f, w_noise, f_noise; };
+  std::vector<OurValues> our(s.eps_values.size());
+  for (int n : s.eps_ns) {
+    const Grid whole = ours.grid(n);
+    const SamplingSpec spec{SamplingKind::Gauss};
+    const Problem p = make_problem(ours, part_of(whole, find_mirrors(ours, whole, spec)), spec);
+    const double parts = double(p.grid.whole_nx()) * p.grid.whole_ny() / (double(p.grid.nx) * p.grid.ny);
+    const std::vector<VectorXd> path = penalised_path_exactly(p, s.eps_values);
+    for (size_t k = 0; k < path.size(); ++k) {
+      const double eps = s.eps_values[k];
+      const double mw = extremum_of_w(p.grid, path[k], 1).value;
+      const PenaltyRule rule = penalty_rule(p, &path[k]);
+      const double force = parts * (rule.weights.array() * (sc.cylinder->height * (1 + s.perturb) - (rule.S * path[k]).array())).sum() / eps;
+      our[k].w.push_back(mw), our[k].f.push_back(force);
+      our[k].w_noise.push_back(1e-12 * std::abs(mw));
+      our[k].f_noise.push_back(parts * rule.weights.sum() * 1e-12 * std::abs(mw) / eps);
+    }
+  }
+  for (size_t k = 0; k < s.eps_values.size(); ++k) {
+    const double eps = s.eps_values[k];
+    std::vector<double> fw, ff, fwn, ffn;
     for (int n : s.eps_levels) {
-      const PenaltyRun r = penalty(s, n, "-scheme nonlinear -sampling quadrature -continuation 0 -tol 1e-13" + eps_arg(eps), sc.cylinder->height);
+      const PenaltyRun r = penalty(s, n, "-scheme nonlinear -sampling disk -continuation 0 -tol 1e-13" + eps_arg(eps), sc.cylinder->height);
       if (!r.converged) throw std::runtime_error("penalty_hct.edp did not converge at eps = " + fmt("%g", eps) + ": " + r.why);
-      eps_runs.push_back({kFreefemCode, 4 * n, r.h, r.max_w, r.force});
+      part.eps_runs.push_back({kFreefemCode, 4 * n, r.h, r.max_w, r.force});
       fw.push_back(r.max_w), ff.push_back(r.force);
       fwn.push_back(freefem_roundoff(r.h, r.max_w)), ffn.push_back(freefem_roundoff(r.h, r.force));
     }
-    for (size_t j = 0; j < s.eps_ns.size(); ++j) {
-      const int n = s.eps_ns[j];
-      const Problem& p = paths[j].first;
-      const VectorXd& w = at_eps(paths[j].second, eps);
-      const double mw = max_nodal_abs(w);
-      const double force = total_contact_force(p, contact_force_density(p, w, eps));
-      eps_runs.push_back({"bfs-gauss", n, 1.0 / n, mw, force});
-      ow.push_back(mw), of.push_back(force);
-      own.push_back(exact_solve_roundoff(n, mw)), ofn.push_back(exact_solve_roundoff(n, force));
-    }
-    EpsComparison c{eps, extrapolate(fw, fwn), extrapolate(ff, ffn), extrapolate(ow, own), extrapolate(of, ofn), {}, {}};
+    for (size_t j = 0; j < s.eps_ns.size(); ++j)
+      part.eps_runs.push_back({kOurDiskCode, s.eps_ns[j], 1.0 / s.eps_ns[j], our[k].w[j], our[k].f[j]});
+    EpsComparison c{eps, extrapolate(fw, fwn), extrapolate(ff, ffn), extrapolate(our[k].w, our[k].w_noise),
+                    extrapolate(our[k].f, our[k].f_noise), {}, {}};
     c.w = compare_limits(c.ff_w, c.our_w);
     c.f = compare_limits(c.ff_f, c.our_f);
-    all_ok = all_ok && c.w.agree && c.f.agree;
-    comparisons.push_back(c);
+    part.ok = part.ok && c.w.agree && c.f.agree;
+    part.comparisons.push_back(c);
   }
 }
 
@@ -346,19 +365,47 @@ std::string eps_csv(const Setup& s, const EpsPart& part) {
   const auto& comparisons = part.comparisons;
   std::ostringstream ecsv;
   ecsv << "# Written by build/crosscheck_penalty (make crosscheck). The exact discrete penalised solution w_eps at\n"
-          "# fixed eps (the paper's obstacle, f = 0), the penalty integrated over the disk: FreeFEM (penalty_hct.edp,\n"
-          "# (3a), quadrature sampling; cells per quarter circle) and this code (bfs-gauss; n squares per side).\n"
-          "# max_w at the vertices or nodes; force = the penalty force eps^-1 (phi - w)^+ integrated.\n";
+          "# fixed eps (the paper's obstacle, f = 0), the penalty integrated over the true disk (D30): FreeFEM\n"
+          "# (penalty_hct.edp -sampling disk, (3a); cells per quarter circle) and this code (bfs-disk; n squares per side).\n"
+          "# max_w: FreeFEM's largest vertex value, ours the field's maximum (both at the centre here);\n"
+          "# force = the penalty force eps^-1 (phi - w)^+ integrated over the disk.\n";
   ecsv << "eps,code,cells,h,max_w,force\n";
   for (size_t k = 0, i = 0; k < comparisons.size(); ++k)
     for (size_t j = 0; j < s.eps_levels.size() + s.eps_ns.size(); ++j, ++i) {
       const EpsRun& r = eps_runs[i];
       // to the digits each code's round-off leaves (freefem_roundoff, exact_solve_roundoff)
-      auto noise = [&](double v) { return r.code == kFreefemCode ? freefem_roundoff(r.h, v) : exact_solve_roundoff(r.cells, v); };
+      auto noise = [&](double v) { return r.code == kFreefemCode ? freefem_roundoff(r.h, v) : 1e-12 * std::abs(v); };
       ecsv << fmt("%g", comparisons[k].eps) << "," << r.code << "," << r.cells << "," << fmt("%.6g", r.h) << ","
            << fmt_above(r.max_w, noise(r.max_w), 10, 'g') << "," << fmt_above(r.force, noise(r.force), 10, 'g') << "\n";
     }
   return ecsv.str();
+}
+
+// The comparison itself, a row per eps and quantity: what the document quotes and check-results reads.
+std::string limits_csv(const EpsPart& part) {
+  std::ostringstream csv;
+  csv << "# Written by build/crosscheck_penalty (make crosscheck). Each code's Richardson limit of the penalised\n"
+         "# problem at fixed eps (the penalty over the true disk, D30) with its bar; steady = 1 where the observed\n"
+         "# order is steady (order: the last one, else empty); tolerance = the sum of the bars; relative = tolerance\n"
+         "# over our limit, the smallest relative change of the scene the row detects; agree = difference <= tolerance.\n";
+  csv << "eps,quantity,freefem_limit,freefem_bar,freefem_steady,freefem_order,ours_limit,ours_bar,ours_steady,"
+         "ours_order,difference,tolerance,relative,agree\n";
+  auto order = [](const Extrapolation& e) {
+    return e.steady ? format_order(e.orders.back(), e.order_noise.back()) : std::string();
+  };
+  for (const EpsComparison& c : part.comparisons)
+    for (int q = 0; q < 2; ++q) {
+      const Extrapolation& ff = q == 0 ? c.ff_w : c.ff_f;
+      const Extrapolation& us = q == 0 ? c.our_w : c.our_f;
+      const Agreement& a = q == 0 ? c.w : c.f;
+      csv << fmt("%g", c.eps) << "," << (q == 0 ? "max_w" : "force") << ","
+          << fmt_above(ff.limit, ff.limit_noise, 10, 'g') << "," << fmt_above(ff.bar, ff.bar_noise, 2) << ","
+          << ff.steady << "," << order(ff) << "," << fmt_above(us.limit, us.limit_noise, 10, 'g') << ","
+          << fmt_above(us.bar, us.bar_noise, 2) << "," << us.steady << "," << order(us) << ","
+          << fmt("%.1e", a.difference) << "," << fmt("%.1e", a.tolerance) << ","
+          << fmt("%.1e", a.tolerance / std::abs(us.limit)) << "," << a.agree << "\n";
+    }
+  return csv.str();
 }
 
 std::string fig2_csv(const Setup& s, const Fig2Part& part) {
@@ -423,9 +470,6 @@ std::string table_md(const Setup& s, const TablePart& part, const CsvTable& ours
 
 std::string eps_md(const Setup& s, const EpsPart& part) {
   const auto& comparisons = part.comparisons;
-  const auto& rate = part.rate;
-  const auto& rate_noise = part.rate_noise;
-  const bool rate_ok = part.rate_ok;
   std::ostringstream md;
   // "agree" in every row says nothing a row can be read for: a row that differs is marked instead.
   md << "### Fixed eps\n\n| eps | quantity | FreeFEM | this code | difference | tolerance |\n"
@@ -439,16 +483,39 @@ std::string eps_md(const Setup& s, const EpsPart& part) {
   int steady = 0;  // the caption says how the cells were made, as they were
   for (const EpsComparison& c : comparisons)
     for (const Extrapolation* e : {&c.ff_w, &c.ff_f, &c.our_w, &c.our_f}) steady += e->steady;
-  md << "\nTable: The penalised problem at fixed eps, solved by both codes and refined to its limit: FreeFEM on "
+  md << "\nTable: The penalised problem at fixed eps, solved by both codes and refined to its limit, the penalty "
+        "integrated over the true disk (D30): FreeFEM on "
      << 4 * s.eps_levels.front() << " to " << 4 * s.eps_levels.back()
-     << " cells per quarter circle with the penalty at its quadrature points, this code on h = 1/" << s.eps_ns.front()
-     << " to 1/" << s.eps_ns.back() << " with Gauss sampling: the penalty integrated over the disk, one continuum "
-        "problem. "
+     << " cells per quarter circle, over the triangles inside the circle and the segments beyond their chords; this "
+        "code on h = 1/" << s.eps_ns.front() << " to 1/" << s.eps_ns.back()
+     << " by the rule that follows the circle and the curve w = phi through each square. "
      << (steady == 0 ? "No observed order is steady here, so each cell is the finest value and its last increment"
                      : "Each cell is a Richardson limit and its bar where the observed order is steady (the order then "
                        "follows in brackets), else the finest value and its last increment")
      << "; the tolerance is the sum of the two bars, and the codes agree in every row not marked as differing.\n";
-  md << "\n| eps | FreeFEM: $\\max w - \\max w_\\varepsilon$ | $F - F_\\varepsilon$ | this code: $\\max w - \\max w_\\varepsilon$ "
+  // With f = 0, (2) is positively homogeneous in (phi, w): a relative change d of the obstacle's height
+  // changes w_eps and the force by the same d. So a row resolves a change of the scene of its
+  // tolerance over its value, and no smaller.
+  double worst_w = 0, worst_f = 0, best_w = INFINITY;
+  for (const EpsComparison& c : comparisons) {
+    const double rw = c.w.tolerance / std::abs(c.our_w.limit), rf = c.f.tolerance / std::abs(c.our_f.limit);
+    worst_w = std::max(worst_w, rw), worst_f = std::max(worst_f, rf), best_w = std::min(best_w, rw);
+  }
+  md << "\nResolution: with no load, (2) is positively homogeneous in the obstacle and w, so changing the obstacle's "
+        "height by a relative d changes max w and the force by the same d; a row therefore detects any change of the "
+        "scene larger than its tolerance over its value. Over these eps that is "
+     << (fmt("%.1e", best_w) == fmt("%.1e", worst_w) ? fmt("%.1e", worst_w) : fmt("%.1e", best_w) + " to " + fmt("%.1e", worst_w))
+     << " for max w (target 1e-7: " << (worst_w <= 1e-7 ? "met" : "NOT met") << ") and at most "
+     << fmt("%.1e", worst_f) << " for the force (target 1e-6: " << (worst_f <= 1e-6 ? "met" : "NOT met") << ").\n";
+  return md.str();
+}
+
+std::string rate_md(const Setup& s, const EpsPart& part) {
+  const auto& rate = part.rate;
+  const auto& rate_noise = part.rate_noise;
+  const bool rate_ok = part.rate_ok;
+  std::ostringstream md;
+  md << "| eps | FreeFEM: $\\max w - \\max w_\\varepsilon$ | $F - F_\\varepsilon$ | this code: $\\max w - \\max w_\\varepsilon$ "
         "| $F - F_\\varepsilon$ |\n"
         "|---:|---:|---:|---:|---:|\n";
   for (size_t k = 0; k < rate.size(); ++k)
@@ -508,12 +575,39 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--reference", s.reference, "folder with the paper's numbers and the FreeFEM scripts")
       ->capture_default_str();
-  app.add_option("--parts", s.parts, "which checks to run, comma-separated: table, eps, fig2 (the report holds only those, and only their CSVs are rewritten)")
+  app.add_option("--parts", s.parts, "which checks to run, comma-separated: table, eps, rate, fig2 (the report holds only those, and only their CSVs are rewritten)")
       ->capture_default_str();
+  app.add_option("--eps", s.eps_values, "fixed eps: the values compared, decreasing, each at most 0.01")->delimiter(',')->capture_default_str();
+  app.add_option("--grids", s.eps_ns, "fixed eps: our grids (squares per side, even, coarse to fine, at least three)")
+      ->delimiter(',')->capture_default_str();
+  app.add_option("--meshes", s.eps_levels, "fixed eps: FreeFEM's meshes (the .geo's n: 4 n cells per quarter circle; "
+                 "coarse to fine, at least three)")->delimiter(',')->capture_default_str();
+  app.add_option("--perturb", s.perturb, "fixed eps: ours solves with the obstacle's height times 1 + this, to show that "
+                 "the check detects a changed scene (it must then say the codes differ)")->capture_default_str();
   if (int code = parse_options(app, argc, argv, "crosscheck_penalty"); code >= 0) return code;
+  {
+    std::string bad;
+    for (size_t k = 0; k < s.eps_values.size(); ++k)
+      if (!(s.eps_values[k] > 0 && s.eps_values[k] <= 0.01) || (k > 0 && !(s.eps_values[k] < s.eps_values[k - 1])))
+        bad = "--eps: the values must decrease and lie in (0, 0.01]";
+    if (s.eps_values.empty()) bad = "--eps: give at least one value";
+    for (size_t k = 0; k < s.eps_ns.size(); ++k)
+      if (s.eps_ns[k] < 8 || s.eps_ns[k] > 1024 || s.eps_ns[k] % 2 || (k > 0 && s.eps_ns[k] <= s.eps_ns[k - 1]))
+        bad = "--grids: each an even number from 8 to 1024, increasing";
+    if (s.eps_ns.size() < 3) bad = "--grids: at least three grids (an observed order needs three)";
+    for (size_t k = 0; k < s.eps_levels.size(); ++k)
+      if (s.eps_levels[k] < 1 || s.eps_levels[k] > 32 || (k > 0 && s.eps_levels[k] <= s.eps_levels[k - 1]))
+        bad = "--meshes: each from 1 to 32, increasing";
+    if (s.eps_levels.size() < 3) bad = "--meshes: at least three meshes (an observed order needs three)";
+    if (!std::isfinite(s.perturb) || std::abs(s.perturb) >= 0.5) bad = "--perturb: a finite number of size below 0.5";
+    if (!bad.empty()) {
+      std::cerr << "crosscheck_penalty: bad input: " << bad << "\n";
+      return kBadInput;
+    }
+  }
   for (const std::string& part : split_csv_line(s.parts))
-    if (part != "table" && part != "eps" && part != "fig2") {
-      std::cerr << "crosscheck_penalty: bad input: --parts: unknown part \"" << part << "\" (table, eps, fig2)\n";
+    if (part != "table" && part != "eps" && part != "rate" && part != "fig2") {
+      std::cerr << "crosscheck_penalty: bad input: --parts: unknown part \"" << part << "\" (table, eps, rate, fig2)\n";
       return kBadInput;
     }
   auto wanted = [&](const std::string& part) {
@@ -526,7 +620,7 @@ int main(int argc, char** argv) {
   clean_up_on_interrupt("crosscheck_penalty");
   try {
     for (const char* f : {"crosscheck_penalty.md", "crosscheck_penalty_table.csv", "crosscheck_penalty_eps.csv",
-                          "crosscheck_penalty_fig2.csv"})
+                          "crosscheck_penalty_limits.csv", "crosscheck_penalty_fig2.csv"})
       check_writable(s.out + "/" + f);
     std::filesystem::create_directories(s.work);
     const auto numbers = read_paper_numbers(s.reference + "/paper_numbers.csv");
@@ -540,17 +634,20 @@ int main(int argc, char** argv) {
     EpsPart eps;
     Fig2Part fig2;
     if (wanted("table")) table = run_table(s, paper, ours_table);
-    if (wanted("eps")) run_fixed_eps(s, eps), run_rate(s, eps);
+    if (wanted("eps")) run_fixed_eps(s, eps);
+    if (wanted("rate")) run_rate(s, eps);
     if (wanted("fig2")) fig2 = run_fig2(s, ours_fig2);
     const bool all_ok = table.ok && eps.ok && fig2.ok;
 
     std::string md = "<!-- Written by build/crosscheck_penalty (make crosscheck); do not edit. -->\n\n";
     if (wanted("table")) md += table_md(s, table, ours_contraction, lambda1);
     if (wanted("eps")) md += eps_md(s, eps);
+    if (wanted("rate")) md += rate_md(s, eps);
     if (wanted("fig2")) md += fig2_md(s, fig2);
     md += std::string("\n") + (all_ok ? "Verdict: every check agrees." : "Verdict: some checks FAIL (above).") + "\n";
     if (wanted("table")) write_file_atomically(s.out + "/crosscheck_penalty_table.csv", table_csv(s, table));
     if (wanted("eps")) write_file_atomically(s.out + "/crosscheck_penalty_eps.csv", eps_csv(s, eps));
+    if (wanted("eps")) write_file_atomically(s.out + "/crosscheck_penalty_limits.csv", limits_csv(eps));
     if (wanted("fig2")) write_file_atomically(s.out + "/crosscheck_penalty_fig2.csv", fig2_csv(s, fig2));
     write_file_atomically(s.out + "/crosscheck_penalty.md", md);
     std::cerr << "crosscheck_penalty: " << (all_ok ? "every check agrees" : "some checks fail") << " (" << s.out
