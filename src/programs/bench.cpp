@@ -103,10 +103,16 @@ std::map<std::string, double> run_job(const Job& job, const Scene& scene, std::v
 
 bool is_peer(const Job& job) { return job.solver.rfind("snesvi-", 0) == 0; }
 
-// Where the peer program is, and where it reads the paper's numbers.
+// Where the peer program is, where it reads the paper's numbers, and the certificate it must reach:
+// 1e-9, not our 1e-10, because at n = 512 both SNESVI methods stall near 2.3e-10 in round-off (the
+// multipliers they are judged by are read off K w - F); ours meets 1e-10 and is timed to it.
 struct Peer {
   std::string program, reference;
+  double tol = 1e-9;
 };
+// "snesvi-rsls" (sequenced, as ours), "snesvi-rsls-cold" (max(phi, 0) on the finest grid alone).
+std::string peer_method(const Job& job) { return job.solver.substr(7, 4); }
+std::string peer_start(const Job& job) { return job.solver.size() > 11 ? "cold" : "sequenced"; }
 
 // Runs a job in a child process and collects its measurements and its peak resident memory. A
 // peer's child becomes the PETSc program itself, which writes the same file.
@@ -117,9 +123,11 @@ Outcome run_in_child(const Job& job, const Scene& scene, const std::filesystem::
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("bench: fork failed");
   if (pid == 0 && is_peer(job)) {
-    const std::string n = std::to_string(job.n), method = job.solver.substr(7), out = file.string();
-    execl(peer.program.c_str(), peer.program.c_str(), "-n", n.c_str(), "--method", method.c_str(), "--reference",
-          peer.reference.c_str(), "--out", out.c_str(), static_cast<char*>(nullptr));
+    const std::string n = std::to_string(job.n), method = peer_method(job), start = peer_start(job), out = file.string();
+    const std::string tol = fmt("%.17g", peer.tol);
+    execl(peer.program.c_str(), peer.program.c_str(), "-n", n.c_str(), "--method", method.c_str(), "--start",
+          start.c_str(), "--tol", tol.c_str(), "--reference", peer.reference.c_str(), "--out", out.c_str(),
+          static_cast<char*>(nullptr));
     std::cerr << "bench: cannot run " << peer.program << "\n";
     _exit(kFailure);
   }
@@ -180,7 +188,7 @@ std::string csv(const std::vector<Outcome>& outcomes, const std::map<int, const 
   o << "# bench (make bench): the paper's problem (cylinder R = 0.0625, f = 0) with nodal sampling.\n"
        "# solver: baseline = one unconstrained analysis + factorisation + solve of K; exact = primal-dual active\n"
        "# sets with grid sequencing; snesvi-rsls, snesvi-ssls = PETSc's SNESVI (build/peer_snesvi) on the identical\n"
-       "# problem; nonlinear = scheme (3a), linear = scheme (5a), both with eps continuation and\n"
+       "# problem, sequenced as ours (-cold: started on the finest grid alone), to a certificate of 1e-9; nonlinear = scheme (3a), linear = scheme (5a), both with eps continuation and\n"
        "# stopping tolerance tol. seconds: the solve, without assembling the fine-grid problem (assemble_s);\n"
        "# ratio: seconds / baseline seconds on the same grid; peak_mib: the run's peak resident memory;\n"
        "# error_discrete: max over nodes |w - w_exact| with w_exact the exact solver's answer on the same grid;\n"
@@ -192,7 +200,8 @@ std::string csv(const std::vector<Outcome>& outcomes, const std::map<int, const 
        "error_discrete,error_limit,certificate\n";
   // Grouped by solver and tolerance, so that each forms one block (one line in the plot).
   std::vector<const Outcome*> order;
-  for (const char* solver : {"baseline", "exact", "snesvi-rsls", "snesvi-ssls", "nonlinear", "linear"})
+  for (const char* solver : {"baseline", "exact", "snesvi-rsls", "snesvi-ssls", "snesvi-rsls-cold", "snesvi-ssls-cold", "nonlinear",
+                             "linear"})
     for (double tol : {0.0, 1e-6, 1e-8})
       for (const Outcome& r : outcomes)
         if (r.job.solver == solver && r.job.tol == tol) order.push_back(&r);
@@ -286,8 +295,11 @@ void penalty_table(std::ostream& md, const std::vector<Outcome>& outcomes, const
 void peers_table(std::ostream& md, const std::vector<Outcome>& outcomes, const ByN& exact_at, const Peer& peer) {
   md << "\nPeers: PETSc's SNESVI (`" << peer.program << "`, PETSc 3.18) on the identical discrete problem (the same K, "
         "F and nodal bounds), reduced-space Newton (rsls: CHOLMOD Cholesky of K on the free set) and semismooth "
-        "Newton (ssls: MUMPS LU of the scaled Jacobian), full projected Newton steps, started from max(phi, 0); "
-        "each answer is judged by our certificate and compared with ours node by node.\n\n"
+        "Newton (ssls: MUMPS LU of the scaled Jacobian), full projected Newton steps. Each runs twice: sequenced as ours "
+        "is (the grids n/2, n/4, ... down to 8 first, each answer prolonged exactly as the next grid's start), and cold "
+        "(-cold: from max(phi, 0) on n alone). Each stops when our certificate is at most "
+     << fmt("%g", peer.tol) << " (ours: 1e-10; at n = 512 neither method reaches 1e-10 in round-off), is judged by it, "
+        "and is compared with ours node by node; Newton its counts every grid's steps.\n\n"
         "| $n$ | solver | certified | Newton its | factorisations | s | ratio to ours | peak MiB | certificate | "
         "largest nodal difference to ours |\n|---:|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Outcome& r : outcomes) {
@@ -309,46 +321,39 @@ void peers_table(std::ostream& md, const std::vector<Outcome>& outcomes, const B
         "first, whether the peer found the same answer, then the time against ours.\n";
 }
 
-// Target: at n = 512, at least 3 times faster than the faster SNESVI variant that ran there. A
-// certified run is preferred; when none is, the faster uncertified one is reported as such, with how
-// far its certificate and its answer are from ours, so the target is never silently "not measured".
+// Target (issue 42): at n = 256 and 512, at least 3 times faster than the fastest certified SNESVI
+// configuration run there (cold or sequenced, rsls or ssls). When none is certified, the fastest
+// uncertified one is reported as such, with how far its certificate and its answer are from ours,
+// so the target is never silently "not measured".
 void peer_target(std::ostream& md, const std::vector<Outcome>& outcomes, const ByN& exact_at, int max_rsls, int max_ssls) {
-  const auto e = exact_at.find(512);
-  const Outcome* fastest = nullptr;
-  for (const bool want_certified : {true, false}) {
-    for (const Outcome& r : outcomes)
-      if (is_peer(r.job) && r.job.n == 512 && r.ok && (!want_certified || r.v.at("converged") != 0) &&
-          (!fastest || r.v.at("seconds") < fastest->v.at("seconds")))
-        fastest = &r;
-    if (fastest) break;
+  for (const int n : {256, 512}) {
+    const auto e = exact_at.find(n);
+    const Outcome* fastest = nullptr;
+    for (const bool want_certified : {true, false}) {
+      for (const Outcome& r : outcomes)
+        if (is_peer(r.job) && r.job.n == n && r.ok && (!want_certified || r.v.at("converged") != 0) &&
+            (!fastest || r.v.at("seconds") < fastest->v.at("seconds")))
+          fastest = &r;
+      if (fastest) break;
+    }
+    md << "- n = " << n << " against PETSc's SNESVI at its best: ";
+    if (e == exact_at.end() || !fastest) {
+      md << "not measured (no run of both at n = " << n << "; rsls runs to n = " << max_rsls << ", ssls to n = "
+         << max_ssls << ").\n";
+      continue;
+    }
+    const double ratio = fastest->v.at("seconds") / e->second->v.at("seconds");
+    const bool certified = fastest->v.at("converged") != 0;
+    md << "ours " << fmt("%.3g", e->second->v.at("seconds")) << " s against " << fmt("%.3g", fastest->v.at("seconds"))
+       << " s for the fastest " << (certified ? "certified " : "") << "configuration run there ("
+       << fastest->job.solver.substr(7) << "): ours is " << fmt("%.1f", ratio) << " times faster (target >= 3: "
+       << met(ratio >= 3) << ")";
+    if (!certified)
+      md << ", measured on an uncertified run: " << fastest->job.solver.substr(7) << " stopped with certificate "
+         << fmt("%.1e", fastest->v.at("certificate")) << " (ours " << fmt("%.1e", e->second->v.at("certificate"))
+         << "), and its nodal values differ from ours by at most " << fmt("%.1e", max_diff(fastest->nodal, e->second->nodal));
+    md << ".\n";
   }
-  md << "- n = 512 against PETSc's SNESVI: ";
-  if (e == exact_at.end() || !fastest) {
-    md << "not measured (no run of both at n = 512; rsls runs to n = " << max_rsls << ", ssls to n = " << max_ssls
-       << ").\n";
-    return;
-  }
-  const double ratio = fastest->v.at("seconds") / e->second->v.at("seconds");
-  const bool certified = fastest->v.at("converged") != 0;
-  md << "ours " << fmt("%.3g", e->second->v.at("seconds")) << " s against " << fmt("%.3g", fastest->v.at("seconds"))
-     << " s for the faster variant run there (" << fastest->job.solver.substr(7) << "): ours is " << fmt("%.1f", ratio)
-     << " times faster (target >= 3: " << met(ratio >= 3) << ")";
-  if (!certified)
-    md << ", measured on an uncertified run: " << fastest->job.solver.substr(7) << " stopped with certificate "
-       << fmt("%.1e", fastest->v.at("certificate")) << " (ours " << fmt("%.1e", e->second->v.at("certificate"))
-       << "), because its certificate no longer halved, and its nodal values differ from ours by at most "
-       << fmt("%.1e", max_diff(fastest->nodal, e->second->nodal))
-       << "; its certificate grows with n in the table above, as round-off in the multipliers it reads off the "
-          "residual would";
-  // The finest grid rsls actually ran on: its limit, or where the time budget stopped it.
-  int rsls_finest = 0;
-  for (const Outcome& r : outcomes)
-    if (r.job.solver == "snesvi-rsls" && r.ok) rsls_finest = std::max(rsls_finest, r.job.n);
-  if (rsls_finest < 512)
-    md << "; rsls ran only to n = " << rsls_finest << (rsls_finest < max_rsls ? " (its next grid was predicted past the time budget)" : "")
-       << ", because its Newton iterations grow with n (see the table) and each factorises K on the free set afresh, so "
-          "at n = 512 it would take far longer than ssls";
-  md << ".\n";
 }
 
 // Where the nodal grids stand against the plate's answer: the error that no solver removes.
@@ -404,10 +409,12 @@ void targets(std::ostream& md, const ByN& exact_at, const ByN& baseline_at, int 
 // unconstrained baseline, and SNESVI's faster variant) run to their limits regardless.
 struct Limits {
   int max_exact = 1024, max_baseline = 512, max_nonlinear = 128, max_linear = 64;
-  int min_peer = 32, max_rsls = 256, max_ssls = 512;
+  int min_peer = 32, max_rsls = 512, max_ssls = 512, max_cold = 256;
   double budget = 60;
 };
-bool budget_exempt(const std::string& solver) { return solver == "exact" || solver == "baseline" || solver == "snesvi-ssls"; }
+// The headline peer (sequenced rsls, the fastest configuration found) must reach n = 512 whatever
+// the budget predicts; the others stop where their next grid would take longer than the budget.
+bool budget_exempt(const std::string& solver) { return solver == "exact" || solver == "baseline" || solver == "snesvi-rsls"; }
 
 std::string report(const std::vector<Outcome>& outcomes, const ByN& exact_at, const ByN& baseline_at, const Limits& l,
                    const Peer& peer, const Continuum& c) {
@@ -443,6 +450,7 @@ int main(int argc, char** argv) {
   app.add_option("--min-peer", l.min_peer, "coarsest grid for the peers")->check(CLI::Range(8, 2048))->capture_default_str();
   app.add_option("--max-rsls", l.max_rsls, "finest grid for SNESVI rsls (0: none)")->check(CLI::Range(0, 2048))->capture_default_str();
   app.add_option("--max-ssls", l.max_ssls, "finest grid for SNESVI ssls (0: none)")->check(CLI::Range(0, 2048))->capture_default_str();
+  app.add_option("--max-cold", l.max_cold, "finest grid for SNESVI started cold (0: none)")->check(CLI::Range(0, 2048))->capture_default_str();
   app.add_option("--budget", l.budget, "seconds: a solver whose next run is predicted to take longer stops (not ours, "
                  "the baseline or ssls, which the targets need)")->check(CLI::PositiveNumber)->capture_default_str();
   app.footer(kExitStatusHelp);
@@ -462,6 +470,8 @@ int main(int argc, char** argv) {
       jobs.push_back({"exact", n, 0});
       if (n >= l.min_peer && n <= l.max_rsls) jobs.push_back({"snesvi-rsls", n, 0});
       if (n >= l.min_peer && n <= l.max_ssls) jobs.push_back({"snesvi-ssls", n, 0});
+      if (n >= l.min_peer && n <= std::min(l.max_cold, l.max_rsls)) jobs.push_back({"snesvi-rsls-cold", n, 0});
+      if (n >= l.min_peer && n <= std::min(l.max_cold, l.max_ssls)) jobs.push_back({"snesvi-ssls-cold", n, 0});
       for (double tol : {1e-6, 1e-8})
         if (n <= l.max_nonlinear) jobs.push_back({"nonlinear", n, tol});
       if (n <= l.max_linear) jobs.push_back({"linear", n, 1e-6});

@@ -2,12 +2,15 @@
 // solves (the paper's plate, nodal sampling: K w = F + lambda at the nodal values, w >= phi there,
 // the other degrees of freedom free) with PETSc's SNESVI, reduced-space (vinewtonrsls) or
 // semismooth (vinewtonssls) Newton, a sparse direct factorisation inside, and judges the answer by
-// our certificate. Writes "key value" lines and the nodal values to --out, as bench's children do.
+// our certificate. By default it is sequenced as ours is (--start sequenced: the coarser grids
+// first, each answer the next grid's start); --start cold starts on the finest grid alone. Writes "key value" lines and the nodal values to --out, as bench's children do.
 // `peer_snesvi --help` lists the options.
 #include <CLI/CLI.hpp>
 #include <petscsnes.h>
 
+#include <algorithm>
 #include <iostream>
+#include <optional>
 #include <vector>
 
 #include "active_set.hpp"
@@ -118,16 +121,18 @@ PetscErrorCode jacobian(SNES, Vec, Mat J, Mat, void* ctx) {
 
 struct Options {
   int n = 64;
-  std::string method = "rsls", reference = "reference", out;
+  std::string method = "rsls", start = "sequenced", reference = "reference", out;
   double tol = 1e-10;
   int max_it = 200;
 };
 
-int solve(const Options& o) {
-  Measurements m;
-  std::map<std::string, double>& v = m.v;
-  const auto t0 = Clock::now();
-  const Problem p = make_problem(paper_scene(), make_grid(o.n), SamplingSpec{SamplingKind::Nodes});
+// One grid's solve by SNESVI from `start`.
+struct GridRun {
+  VectorXd w;
+  int iterations = 0, factorizations = 0;
+  SNESConvergedReason reason = SNES_CONVERGED_ITERATING;
+};
+GridRun solve_grid(const Problem& p, const VectorXd& start, const Options& o) {
   const int N = p.grid.unknowns();
   // The bounds: phi at the value of each sampled node (row q of S is node q's value, 4 q), none elsewhere.
   VectorXd lower = VectorXd::Constant(N, PETSC_NINFINITY), upper = VectorXd::Constant(N, PETSC_INFINITY);
@@ -136,12 +141,9 @@ int solve(const Options& o) {
   Context c{petsc_matrix(p.K), petsc_vector(p.F), &p, o.tol, o.max_it, {}};
   Mat J;
   MatDuplicate(c.K, MAT_COPY_VALUES, &J);
-  Vec w = petsc_vector(lower.cwiseMax(0.0)), lo = petsc_vector(lower), hi = petsc_vector(upper), r;
+  Vec w = petsc_vector(start.cwiseMax(lower)), lo = petsc_vector(lower), hi = petsc_vector(upper), r;
   VecDuplicate(w, &r);
-  v["assemble_s"] = seconds_since(t0);
-  v["unknowns"] = N;
 
-  const auto t1 = Clock::now();
   SNES snes;
   SNESCreate(PETSC_COMM_SELF, &snes);
   SNESSetType(snes, o.method == "rsls" ? SNESVINEWTONRSLS : SNESVINEWTONSSLS);
@@ -161,44 +163,100 @@ int solve(const Options& o) {
   PCSetType(pc, o.method == "rsls" ? PCCHOLESKY : PCLU);
   PCFactorSetMatSolverType(pc, o.method == "rsls" ? MATSOLVERCHOLMOD : MATSOLVERMUMPS);
   // Full projected Newton steps: on this quadratic problem they halve rsls's iterations against the
-  // default backtracking (41 against 158 at n = 128) and spare ssls one. PETSC_OPTIONS may override.
+  // default backtracking (41 against 158 at n = 128, cold) and spare ssls one. PETSC_OPTIONS may override.
   SNESLineSearch search;
   SNESGetLineSearch(snes, &search);
   SNESLineSearchSetType(search, SNESLINESEARCHBASIC);
   SNESSetFromOptions(snes);
   if (SNESSolve(snes, nullptr, w) != 0)
     throw std::runtime_error("PETSc's SNESSolve failed (its message is above)");
-  v["seconds"] = seconds_since(t1);
-  SNESConvergedReason reason;
-  SNESGetConvergedReason(snes, &reason);
+  GridRun run;
+  SNESGetConvergedReason(snes, &run.reason);
   PetscInt its, linear;
   SNESGetIterationNumber(snes, &its);
   SNESGetLinearSolveIterations(snes, &linear);
-  v["iterations"] = its;
-  v["factorizations"] = linear;
-  v["reason"] = reason;
+  run.iterations = static_cast<int>(its);
+  run.factorizations = static_cast<int>(linear);
+  run.w = eigen_vector(w);
+  SNESDestroy(&snes);
+  for (Vec* x : {&w, &lo, &hi, &r, &c.F}) VecDestroy(x);
+  MatDestroy(&c.K);
+  MatDestroy(&J);
+  return run;
+}
 
-  const VectorXd x = eigen_vector(w), lambda = multipliers(p, x);
+// The coarse answer as a start on the grid twice as fine: BFS spaces on nested grids are nested, so
+// Hermite interpolation of w_2h (its value, slopes and twist at each fine node) is w_2h itself.
+VectorXd prolong(const Grid& coarse, const VectorXd& wc, const Grid& fine) {
+  VectorXd w = VectorXd::Zero(fine.unknowns());
+  for (int j = 0; j <= fine.ny; ++j)
+    for (int i = 0; i <= fine.nx; ++i) {
+      if (fine.dof(i, j, kW) < 0) continue;
+      const PointValues v = evaluate(coarse, wc, fine.x(i), fine.y(j));
+      const double parts[4] = {v.w, v.wx, v.wy, v.wxy};
+      for (int k = 0; k < 4; ++k)
+        if (const int d = fine.dof(i, j, k); d >= 0) w[d] = parts[k];
+    }
+  return w;
+}
+
+int solve(const Options& o) {
+  Measurements m;
+  std::map<std::string, double>& v = m.v;
+  const auto t0 = Clock::now();
+  const Scene scene = paper_scene();
+  const Problem p = make_problem(scene, make_grid(o.n), SamplingSpec{SamplingKind::Nodes});
+  v["assemble_s"] = seconds_since(t0);
+  v["unknowns"] = p.grid.unknowns();
+
+  // Sequenced: the grids ours solves before n (n / 2, n / 4, ... while even and at least the
+  // coarsest of ExactOptions), each started from the one before; each coarse solve to the same
+  // certificate, and its answer used even when it misses it (as ours does). Cold: max(phi, 0) on n.
+  // The time includes the coarse grids' assembly, as ours does; not the fine grid's.
+  const auto t1 = Clock::now();
+  std::vector<int> grids{o.n};
+  if (o.start == "sequenced")
+    while (grids.back() % 2 == 0 && grids.back() / 2 >= ExactOptions{}.coarsest) grids.push_back(grids.back() / 2);
+  std::reverse(grids.begin(), grids.end());
+  std::optional<Problem> before;
+  VectorXd w_before;
+  int iterations = 0, factorizations = 0;
+  GridRun fine;
+  for (int n : grids) {
+    std::optional<Problem> level;
+    if (n != o.n) level = make_problem(scene, make_grid(n), SamplingSpec{SamplingKind::Nodes});
+    const Problem& q = level ? *level : p;
+    const VectorXd guess = before ? prolong(before->grid, w_before, q.grid) : VectorXd::Zero(q.grid.unknowns());
+    GridRun run = solve_grid(q, guess, o);
+    iterations += run.iterations, factorizations += run.factorizations;
+    if (n == o.n) fine = std::move(run);
+    else before = std::move(level), w_before = std::move(run.w);
+  }
+  v["seconds"] = seconds_since(t1);
+  v["iterations"] = iterations;
+  v["fine_iterations"] = fine.iterations;
+  v["factorizations"] = factorizations;
+  v["reason"] = fine.reason;
+  v["sequenced"] = o.start == "sequenced";
+
+  const VectorXd& x = fine.w;
+  const VectorXd lambda = multipliers(p, x);
   const Certificate cert = certify(p, x, lambda);
   v["certificate"] = cert.worst();
   v["certificate_violation"] = cert.violation;
   v["certificate_negative_multiplier"] = cert.negative_multiplier;
   v["certificate_complementarity"] = cert.complementarity;
   v["certificate_stationarity"] = cert.stationarity;
-  v["converged"] = reason > 0 && cert.worst() <= o.tol;
+  v["converged"] = fine.reason > 0 && cert.worst() <= o.tol;
   v["w_centre"] = evaluate(p.grid, x, 0.5, 0.5).w;
   v["max_w"] = max_nodal_abs(x);
   v["total_force"] = p.sampling.weights.dot(lambda);
 
-  for (int q = 0; q < N / 4; ++q) m.nodal.push_back(x[4 * q]);
+  for (int q = 0; q < p.grid.unknowns() / 4; ++q) m.nodal.push_back(x[4 * q]);
   write_measurements(o.out, m);
   if (v["converged"] == 0)
-    std::cerr << "peer_snesvi: " << o.method << " n = " << o.n << ": not converged (reason " << reason
-              << ", certificate " << cert.worst() << ")\n";
-  SNESDestroy(&snes);
-  for (Vec* x : {&w, &lo, &hi, &r, &c.F}) VecDestroy(x);
-  MatDestroy(&c.K);
-  MatDestroy(&J);
+    std::cerr << "peer_snesvi: " << o.method << " (" << o.start << ") n = " << o.n << ": not converged (reason "
+              << fine.reason << ", certificate " << cert.worst() << ")\n";
   return v["converged"] != 0 ? kSuccess : kNotConverged;
 }
 
@@ -211,6 +269,9 @@ int main(int argc, char** argv) {
   app.add_option("-n,--cells", o.n, "cells per side")->check(CLI::Range(2, 2048))->capture_default_str();
   app.add_option("--method", o.method, "rsls (reduced space) or ssls (semismooth)")
       ->check(CLI::IsMember({"rsls", "ssls"}))->capture_default_str();
+  app.add_option("--start", o.start, "sequenced: solve n / 2, n / 4, ... (down to 8 cells) first, each grid from the "
+                 "one before, as our exact solver does; cold: from max(phi, 0) on n alone")
+      ->check(CLI::IsMember({"sequenced", "cold"}))->capture_default_str();
   app.add_option("--reference", o.reference, "folder with paper_numbers.csv")->check(CLI::ExistingDirectory)->capture_default_str();
   app.add_option("--out", o.out, "file for the measurements")->required();
   app.add_option("--tol", o.tol, "stop when every entry of our certificate is at most this")

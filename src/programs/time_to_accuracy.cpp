@@ -146,31 +146,44 @@ std::string cell(const std::vector<Run>& runs, const Config& c, double Run::*err
   return "not reached";
 }
 
-// The fastest certified run, FreeFEM's or ours (not a SNESVI peer's), with max w within 1e-5 relative.
-const Run* first_within(const std::vector<Run>& runs, bool freefem) {
+// The fastest run that finished of the configurations `pick` accepts, with max w within tol relative.
+template <class Pick>
+const Run* fastest_within(const std::vector<Run>& runs, double tol, Pick pick) {
   const Run* best = nullptr;
-  for (const Run& r : runs) {
-    const bool ours = !r.config->freefem && r.config->peer_method.empty();
-    if ((freefem ? r.config->freefem : ours) && r.status == 0 && r.err_w <= 1e-5 && (!best || r.seconds < best->seconds))
-      best = &r;
-  }
+  for (const Run& r : runs)
+    if (pick(*r.config) && r.status == 0 && r.err_w <= tol && (!best || r.seconds < best->seconds)) best = &r;
   return best;
 }
+bool ours(const Config& c) { return !c.freefem && c.peer_method.empty(); }
+bool ours_whole(const Config& c) { return ours(c) && c.args.find("--symmetry none") != std::string::npos; }
+bool freefem(const Config& c) { return c.freefem; }
 
 std::string met(bool b) { return b ? "**met**" : "**not met**"; }
 
-// Target: at 1e-5 relative in max w, at least 100 times faster than FreeFEM.
+// Target (issue 42): at 1e-6 and 1e-8 relative in max w, at least 5 times faster than FreeFEM like
+// for like: FreeFEM meshes the whole plate, so against our whole-plate runs (--symmetry none). Our
+// fastest run of any kind (the default solves a quarter, by the mirror lines) is given beside it,
+// labelled, and not judged.
 void freefem_target(std::ostream& md, const std::vector<Run>& runs) {
-  const Run *ours = first_within(runs, false), *ff = first_within(runs, true);
-  md << "- max w within 1e-5 of the answer at least 100 times faster than FreeFEM: ";
-  if (!ours || !ff) {
-    md << "**not measured**: " << (ours ? "FreeFEM" : "this code") << " did not reach it.\n";
-    return;
+  for (const double tol : {1e-6, 1e-8}) {
+    const Run *whole = fastest_within(runs, tol, ours_whole), *any = fastest_within(runs, tol, ours),
+              *ff = fastest_within(runs, tol, freefem);
+    md << "- max w within " << fmt("%g", tol) << " of the answer at least 5 times faster than FreeFEM, whole plate "
+          "against whole plate: ";
+    if (!whole || !ff) {
+      md << "**not measured**: " << (whole ? "FreeFEM" : "our whole-plate run") << " did not reach it.\n";
+      continue;
+    }
+    const double ratio = ff->seconds / whole->seconds;
+    md << met(ratio >= 5) << ": " << whole->config->name << " at n = " << whole->n << " takes "
+       << fmt("%.3g", whole->seconds) << " s, FreeFEM at " << 4 * ff->n << " cells per quarter circle "
+       << fmt("%.3g", ff->seconds) << " s: " << fmt("%.1f", ratio) << " times";
+    if (any && any != whole)
+      md << " (our fastest, " << any->config->name << " at n = " << any->n << " on the part of the plate its mirror "
+         << "lines leave, " << fmt("%.3g", any->seconds) << " s: " << fmt("%.1f", ff->seconds / any->seconds)
+         << " times, not like for like)";
+    md << ".\n";
   }
-  const double ratio = ff->seconds / ours->seconds;
-  md << met(ratio >= 100) << ": " << ours->config->name << " at n = " << ours->n << " takes " << fmt("%.3g", ours->seconds)
-     << " s, FreeFEM at " << 4 * ff->n << " cells per quarter circle " << fmt("%.3g", ff->seconds) << " s: "
-     << fmt("%.1f", ratio) << " times.\n";
 }
 
 // Target: max w within 1e-9 and the total force within 1e-8 (relative) in at most 1 s.
