@@ -27,7 +27,8 @@ PenaltyRule penalty_rule(const Problem& p, const VectorXd* w, ImplicitOrders ord
 // w_eps of (2a) with the penalty integrated by penalty_rule at each iterate: the nonlinear scheme
 // (3a), which with the integral exact is Newton's method (the penalty's derivative is the integral
 // over the region where w < phi), from the starting guess w. Stops when a step moves no nodal value
-// by more than tol times the largest of them; converged = false if max_iter steps do not.
+// by more than tol times the largest of them, or when the steps, below 1e-12 of w, stop falling
+// (round-off, kRoundoffStep); converged = false if max_iter steps do neither.
 struct PenalisedSolve {
   VectorXd w;
   int iterations = 0;

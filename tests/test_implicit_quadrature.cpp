@@ -7,6 +7,9 @@
 #include <functional>
 
 #include "implicit_quadrature.hpp"
+#include "mirror.hpp"
+#include "paper_case.hpp"
+#include "penalty_integral.hpp"
 
 namespace plate {
 namespace {
@@ -146,6 +149,36 @@ TEST(ImplicitRule, ABoxOutsideGivesNoPointAndABoxInsideTheTensorRule) {
   EXPECT_EQ(pts.size(), 16u);
   EXPECT_THROW(implicit_rule(0, 0, -1, 1, {}, {4, 8}, pts), std::invalid_argument);
   EXPECT_THROW(implicit_rule(0, 0, 1, 1, {}, {0, 8}, pts), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace plate
+
+namespace plate {
+namespace {
+
+// The penalty's rule on a plate (penalty_integral.hpp): with no field it covers the disk, on the
+// whole plate and on the quarter the mirror lines leave; with w = 0 < R the region is the disk again;
+// with the field far above the obstacle it is empty. The paper's disk has radius 1/4 and lies on no
+// grid line's tangent, so each grid's squares cut it differently.
+TEST(PenaltyRule, CoversTheDiskOnTheWholePlateAndTheQuarterAndNothingWhereTheFieldIsAbove) {
+  const Scene s = paper_scene();
+  const double r = s.cylinder->radius, disk = M_PI * r * r;
+  for (int n : {16, 40, 64}) {
+    const Problem whole = make_problem(s, make_grid(n), SamplingSpec{SamplingKind::Gauss});
+    EXPECT_NEAR(penalty_rule(whole, nullptr).weights.sum(), disk, 1e-13) << n;
+    const VectorXd zero = VectorXd::Zero(whole.grid.unknowns());
+    EXPECT_NEAR(penalty_rule(whole, &zero).weights.sum(), disk, 1e-13) << n;
+    // 2 R at every node with unknowns, zero slopes: the field is 2 R on every square no clamped edge
+    // touches, which includes every square the disk reaches, so no point of the disk lies below R.
+    VectorXd high = VectorXd::Zero(whole.grid.unknowns());
+    for (Eigen::Index k = 0; k < high.size(); k += 4) high[k] = 2 * s.cylinder->height;
+    EXPECT_EQ(penalty_rule(whole, &high).weights.size(), 0) << n;
+    const SamplingSpec spec{SamplingKind::Gauss};
+    const Grid g = make_grid(n);
+    const Problem quarter = make_problem(s, part_of(g, find_mirrors(s, g, spec)), spec);
+    EXPECT_NEAR(penalty_rule(quarter, nullptr).weights.sum(), disk / 4, 1e-13) << n;
+  }
 }
 
 }  // namespace

@@ -373,7 +373,7 @@ std::string eps_csv(const Setup& s, const EpsPart& part) {
   for (size_t k = 0, i = 0; k < comparisons.size(); ++k)
     for (size_t j = 0; j < s.eps_levels.size() + s.eps_ns.size(); ++j, ++i) {
       const EpsRun& r = eps_runs[i];
-      // to the digits each code's round-off leaves (freefem_roundoff, exact_solve_roundoff)
+      // to the digits each code's round-off leaves (freefem_roundoff; ours, Newton's floor of 1e-12 of w)
       auto noise = [&](double v) { return r.code == kFreefemCode ? freefem_roundoff(r.h, v) : 1e-12 * std::abs(v); };
       ecsv << fmt("%g", comparisons[k].eps) << "," << r.code << "," << r.cells << "," << fmt("%.6g", r.h) << ","
            << fmt_above(r.max_w, noise(r.max_w), 10, 'g') << "," << fmt_above(r.force, noise(r.force), 10, 'g') << "\n";

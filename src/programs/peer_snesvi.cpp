@@ -3,7 +3,8 @@
 // the other degrees of freedom free) with PETSc's SNESVI, reduced-space (vinewtonrsls) or
 // semismooth (vinewtonssls) Newton, a sparse direct factorisation inside, and judges the answer by
 // our certificate. By default it is sequenced as ours is (--start sequenced: the coarser grids
-// first, each answer the next grid's start); --start cold starts on the finest grid alone. Writes "key value" lines and the nodal values to --out, as bench's children do.
+// first, each answer the next grid's start); --start cold starts on the finest grid alone. Writes
+// "key value" lines and the nodal values to --out, as bench's children do.
 // `peer_snesvi --help` lists the options.
 #include <CLI/CLI.hpp>
 #include <petscsnes.h>
