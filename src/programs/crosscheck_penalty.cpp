@@ -15,7 +15,12 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <algorithm>
+#include <cstdlib>
 #include <set>
+#include <thread>
+#include <atomic>
+#include <exception>
 #include <sstream>
 
 #include "active_set.hpp"
@@ -68,7 +73,10 @@ struct Setup {
   // been cut short), and the FreeFEM runs so far, which number their output files.
   mutable std::set<int> meshes_made;
   mutable bool points_written = false;
-  mutable int penalty_runs = 0;
+  mutable std::atomic<int> penalty_runs{0};
+  // FreeFEM runs of the fixed-eps part at a time: they are independent, single-threaded, and most of
+  // the step's time (the 64-cell meshes at small eps), while `make all`'s other steps end early.
+  int jobs = std::max(1u, std::thread::hardware_concurrency());
 };
 
 // FreeFEM's mesh of level n, meshed by this run and then reused within it.
@@ -211,32 +219,61 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
   std::cerr << "crosscheck_penalty: fixed eps (" << s.eps_values.size() << " values, FreeFEM and this code)\n";
   const Scene& sc = s.scene;
   const Scene ours = at_height(sc, sc.cylinder->height * (1 + s.perturb));
+  // FreeFEM's runs, eps by eps and mesh by mesh, on s.jobs workers while ours solve below; the
+  // meshes, the points file and FF_LOADPATH are made first, once (setenv is no thread's business).
+  for (int n : s.eps_levels) mesh(s, n);
+  points(s);
+  setenv("FF_LOADPATH", "/usr/lib/freefem++", 0);
+  std::vector<PenaltyRun> ff_runs(s.eps_values.size() * s.eps_levels.size());
+  std::vector<std::exception_ptr> failed(ff_runs.size());
+  std::atomic<size_t> next{0};
+  auto work = [&] {
+    for (size_t i; (i = next++) < ff_runs.size();) try {
+        const double eps = s.eps_values[i / s.eps_levels.size()];
+        ff_runs[i] = penalty(s, s.eps_levels[i % s.eps_levels.size()],
+                             "-scheme nonlinear -sampling disk -continuation 0 -tol 1e-13" + eps_arg(eps), sc.cylinder->height);
+      } catch (...) {
+        failed[i] = std::current_exception();
+      }
+  };
+  std::vector<std::thread> workers;
+  for (int j = 0; j < s.jobs; ++j) workers.emplace_back(work);
   // Ours: each grid's path of w_eps through the eps values, once. A value's round-off: the floor of
   // Newton's corrections (1e-12 of w, penalty_integral.cpp), and through the penalty eps^-1 times that
-  // over the band where it acts.
+  // over the band where it acts. A failure here still waits for the workers before it is thrown.
   struct OurValues { std::vector<double> w, f, w_noise, f_noise; };
   std::vector<OurValues> our(s.eps_values.size());
-  for (int n : s.eps_ns) {
-    const Grid whole = ours.grid(n);
-    const SamplingSpec spec{SamplingKind::Gauss};
-    const Problem p = make_problem(ours, part_of(whole, find_mirrors(ours, whole, spec)), spec);
-    const double parts = double(p.grid.whole_nx()) * p.grid.whole_ny() / (double(p.grid.nx) * p.grid.ny);
-    const std::vector<VectorXd> path = penalised_path_exactly(p, s.eps_values);
-    for (size_t k = 0; k < path.size(); ++k) {
-      const double eps = s.eps_values[k];
-      const double mw = extremum_of_w(p.grid, path[k], 1).value;
-      const PenaltyRule rule = penalty_rule(p, &path[k]);
-      const double force = parts * (rule.weights.array() * (sc.cylinder->height * (1 + s.perturb) - (rule.S * path[k]).array())).sum() / eps;
-      our[k].w.push_back(mw), our[k].f.push_back(force);
-      our[k].w_noise.push_back(1e-12 * std::abs(mw));
-      our[k].f_noise.push_back(parts * rule.weights.sum() * 1e-12 * std::abs(mw) / eps);
+  std::exception_ptr ours_failed;
+  try {
+    for (int n : s.eps_ns) {
+      const Grid whole = ours.grid(n);
+      const SamplingSpec spec{SamplingKind::Gauss};
+      const Problem p = make_problem(ours, part_of(whole, find_mirrors(ours, whole, spec)), spec);
+      const double parts = double(p.grid.whole_nx()) * p.grid.whole_ny() / (double(p.grid.nx) * p.grid.ny);
+      const std::vector<VectorXd> path = penalised_path_exactly(p, s.eps_values);
+      for (size_t k = 0; k < path.size(); ++k) {
+        const double eps = s.eps_values[k];
+        const double mw = extremum_of_w(p.grid, path[k], 1).value;
+        const PenaltyRule rule = penalty_rule(p, &path[k]);
+        const double force = parts * (rule.weights.array() * (sc.cylinder->height * (1 + s.perturb) - (rule.S * path[k]).array())).sum() / eps;
+        our[k].w.push_back(mw), our[k].f.push_back(force);
+        our[k].w_noise.push_back(1e-12 * std::abs(mw));
+        our[k].f_noise.push_back(parts * rule.weights.sum() * 1e-12 * std::abs(mw) / eps);
+      }
     }
+  } catch (...) {
+    ours_failed = std::current_exception();
   }
+  for (std::thread& t : workers) t.join();
+  if (ours_failed) std::rethrow_exception(ours_failed);
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
   for (size_t k = 0; k < s.eps_values.size(); ++k) {
     const double eps = s.eps_values[k];
     std::vector<double> fw, ff, fwn, ffn;
-    for (int n : s.eps_levels) {
-      const PenaltyRun r = penalty(s, n, "-scheme nonlinear -sampling disk -continuation 0 -tol 1e-13" + eps_arg(eps), sc.cylinder->height);
+    for (size_t j = 0; j < s.eps_levels.size(); ++j) {
+      const int n = s.eps_levels[j];
+      const PenaltyRun& r = ff_runs[k * s.eps_levels.size() + j];
       if (!r.converged) throw std::runtime_error("penalty_hct.edp did not converge at eps = " + fmt("%g", eps) + ": " + r.why);
       part.eps_runs.push_back({kFreefemCode, 4 * n, r.h, r.max_w, r.force});
       fw.push_back(r.max_w), ff.push_back(r.force);
@@ -582,6 +619,7 @@ int main(int argc, char** argv) {
       ->delimiter(',')->capture_default_str();
   app.add_option("--meshes", s.eps_levels, "fixed eps: FreeFEM's meshes (the .geo's n: 4 n cells per quarter circle; "
                  "coarse to fine, at least three)")->delimiter(',')->capture_default_str();
+  app.add_option("--jobs", s.jobs, "fixed eps: FreeFEM runs at a time")->check(CLI::Range(1, 64))->capture_default_str();
   app.add_option("--perturb", s.perturb, "fixed eps: ours solves with the obstacle's height times 1 + this, to show that "
                  "the check detects a changed scene (it must then say the codes differ)")->capture_default_str();
   if (int code = parse_options(app, argc, argv, "crosscheck_penalty"); code >= 0) return code;
