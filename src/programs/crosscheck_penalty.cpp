@@ -74,8 +74,8 @@ struct Setup {
   mutable std::set<int> meshes_made;
   mutable bool points_written = false;
   mutable std::atomic<int> penalty_runs{0};
-  // FreeFEM runs of the fixed-eps part at a time: they are independent, single-threaded, and most of
-  // the step's time (the 64-cell meshes at small eps), while `make all`'s other steps end early.
+  // FreeFEM runs at a time in the table and at fixed eps: they are independent, single-threaded, and
+  // most of the step's time (the 64-cell meshes at small eps), while `make all`'s other steps end early.
   int jobs = std::max(1u, std::thread::hardware_concurrency());
 };
 
@@ -95,6 +95,34 @@ PenaltyRun penalty(const Setup& s, int n, const std::string& args, double R) {
   const std::string out = s.work + "/penalty" + std::to_string(++s.penalty_runs) + ".json";
   return penalty_values(run_freefem(s.penalty, mesh(s, n), scene_args(scene, points(s)) + " " + args, out));
 }
+// run(0) ... run(count - 1), independent FreeFEM runs, on `jobs` threads; a failure in any is
+// thrown once all have ended. The meshes, the points file and FF_LOADPATH must exist before: making
+// them is no thread's business.
+template <class Run>
+void on_workers(int jobs, size_t count, Run run) {
+  std::vector<std::exception_ptr> failed(count);
+  std::atomic<size_t> next{0};
+  auto work = [&] {
+    for (size_t i; (i = next++) < count;) try {
+        run(i);
+      } catch (...) {
+        failed[i] = std::current_exception();
+      }
+  };
+  std::vector<std::thread> workers;
+  for (int j = 1; j < jobs; ++j) workers.emplace_back(work);
+  work();
+  for (std::thread& t : workers) t.join();
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
+}
+// What on_workers needs made first.
+void prepare_runs(const Setup& s, const std::vector<int>& levels) {
+  for (int n : levels) mesh(s, n);
+  points(s);
+  setenv("FF_LOADPATH", "/usr/lib/freefem++", 0);
+}
+
 std::string eps_arg(double eps) {
   std::ostringstream a;
   a.precision(17);
@@ -184,10 +212,18 @@ TablePart run_table(const Setup& s, const std::vector<PublishedRow>& paper, cons
   auto& eigen = part.eigen;
   bool& all_ok = part.ok;
   std::cerr << "crosscheck_penalty: the table (FreeFEM's linear scheme, " << paper.size() << " tolerances)\n";
-  for (const PublishedRow& p : paper) {
+  prepare_runs(s, s.table_levels);
+  const size_t levels = s.table_levels.size();
+  std::vector<PenaltyRun> runs(paper.size() * levels);
+  on_workers(s.jobs, runs.size(), [&](size_t i) {
+    runs[i] = penalty(s, s.table_levels[i % levels], "-scheme linear -sampling vertices -tol " + fmt("%.17g", paper[i / levels].tolerance),
+                      s.scene.cylinder->height);
+  });
+  for (size_t k = 0; k < paper.size(); ++k) {
+    const PublishedRow& p = paper[k];
     TableRow row{p, ours_iterations(ours_table, "nodes", p.tolerance), ours_iterations(ours_table, "gauss", p.tolerance), {}};
-    for (int n : s.table_levels) {
-      const PenaltyRun r = penalty(s, n, "-scheme linear -sampling vertices -tol " + fmt("%.17g", p.tolerance), s.scene.cylinder->height);
+    for (size_t j = 0; j < levels; ++j) {
+      const PenaltyRun& r = runs[k * levels + j];
       row.freefem.push_back(r.converged ? r.iterations : -1);
       if (!r.converged) all_ok = false;
     }
@@ -219,32 +255,28 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
   std::cerr << "crosscheck_penalty: fixed eps (" << s.eps_values.size() << " values, FreeFEM and this code)\n";
   const Scene& sc = s.scene;
   const Scene ours = at_height(sc, sc.cylinder->height * (1 + s.perturb));
-  // FreeFEM's runs, eps by eps and mesh by mesh, on s.jobs workers while ours solve below; the
-  // meshes, the points file and FF_LOADPATH are made first, once (setenv is no thread's business).
-  for (int n : s.eps_levels) mesh(s, n);
-  points(s);
-  setenv("FF_LOADPATH", "/usr/lib/freefem++", 0);
-  std::vector<PenaltyRun> ff_runs(s.eps_values.size() * s.eps_levels.size());
-  std::vector<std::exception_ptr> failed(ff_runs.size());
-  std::atomic<size_t> next{0};
-  auto work = [&] {
-    for (size_t i; (i = next++) < ff_runs.size();) try {
-        const double eps = s.eps_values[i / s.eps_levels.size()];
-        ff_runs[i] = penalty(s, s.eps_levels[i % s.eps_levels.size()],
-                             "-scheme nonlinear -sampling disk -continuation 0 -tol 1e-13" + eps_arg(eps), sc.cylinder->height);
-      } catch (...) {
-        failed[i] = std::current_exception();
-      }
-  };
-  std::vector<std::thread> workers;
-  for (int j = 0; j < s.jobs; ++j) workers.emplace_back(work);
-  // Ours: each grid's path of w_eps through the eps values, once. A value's round-off: the floor of
-  // Newton's corrections (1e-12 of w, penalty_integral.cpp), and through the penalty eps^-1 times that
-  // over the band where it acts. A failure here still waits for the workers before it is thrown.
+  // FreeFEM's runs (index k L + j: eps k, mesh j) and ours (-1: each grid's path of w_eps through
+  // the eps values, once) on s.jobs threads, the costliest first so that no long run starts last:
+  // FreeFEM's finest mesh from the smallest eps up (6 min down to half a minute here), then ours
+  // (about a minute), then the coarser meshes. A value's round-off: the floor of Newton's
+  // corrections (1e-12 of w, penalty_integral.cpp), and through the penalty eps^-1 times that over
+  // the band where it acts.
+  prepare_runs(s, s.eps_levels);
+  const size_t L = s.eps_levels.size();
+  std::vector<PenaltyRun> ff_runs(s.eps_values.size() * L);
+  std::vector<long> order;
+  for (size_t j = L; j-- > 0;) {
+    for (size_t k = s.eps_values.size(); k-- > 0;) order.push_back(static_cast<long>(k * L + j));
+    if (j + 1 == L) order.push_back(-1);
+  }
   struct OurValues { std::vector<double> w, f, w_noise, f_noise; };
   std::vector<OurValues> our(s.eps_values.size());
-  std::exception_ptr ours_failed;
-  try {
+  on_workers(s.jobs, order.size(), [&](size_t t) {
+    if (const long i = order[t]; i >= 0) {
+      ff_runs[i] = penalty(s, s.eps_levels[i % L], "-scheme nonlinear -sampling disk -continuation 0 -tol 1e-13" + eps_arg(s.eps_values[i / L]),
+                           sc.cylinder->height);
+      return;
+    }
     for (int n : s.eps_ns) {
       const Grid whole = ours.grid(n);
       const SamplingSpec spec{SamplingKind::Gauss};
@@ -261,13 +293,7 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
         our[k].f_noise.push_back(parts * rule.weights.sum() * 1e-12 * std::abs(mw) / eps);
       }
     }
-  } catch (...) {
-    ours_failed = std::current_exception();
-  }
-  for (std::thread& t : workers) t.join();
-  if (ours_failed) std::rethrow_exception(ours_failed);
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);
+  });
   for (size_t k = 0; k < s.eps_values.size(); ++k) {
     const double eps = s.eps_values[k];
     std::vector<double> fw, ff, fwn, ffn;
@@ -619,7 +645,7 @@ int main(int argc, char** argv) {
       ->delimiter(',')->capture_default_str();
   app.add_option("--meshes", s.eps_levels, "fixed eps: FreeFEM's meshes (the .geo's n: 4 n cells per quarter circle; "
                  "coarse to fine, at least three)")->delimiter(',')->capture_default_str();
-  app.add_option("--jobs", s.jobs, "fixed eps: FreeFEM runs at a time")->check(CLI::Range(1, 64))->capture_default_str();
+  app.add_option("--jobs", s.jobs, "FreeFEM runs at a time (the table and fixed eps)")->check(CLI::Range(1, 64))->capture_default_str();
   app.add_option("--perturb", s.perturb, "fixed eps: ours solves with the obstacle's height times 1 + this, to show that "
                  "the check detects a changed scene (it must then say the codes differ)")->capture_default_str();
   if (int code = parse_options(app, argc, argv, "crosscheck_penalty"); code >= 0) return code;
