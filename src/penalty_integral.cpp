@@ -176,9 +176,8 @@ std::vector<VectorXd> penalised_path_exactly(const Problem& p, const std::vector
   return path;
 }
 
-double penalised_force(const Problem& p, const VectorXd& w, double eps, ImplicitOrders orders) {
-  const PenaltyRule r = penalty_rule(p, &w, orders);
-  return (r.weights.array() * (cylinder_of(p).height - (r.S * w).array())).sum() / eps;
+double penalised_force(const Problem& p, const PenaltyRule& rule, const VectorXd& w, double eps) {
+  return (rule.weights.array() * (cylinder_of(p).height - (rule.S * w).array())).sum() / eps;
 }
 
 }  // namespace plate

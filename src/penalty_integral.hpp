@@ -43,7 +43,8 @@ PenalisedSolve solve_penalised_exactly(const Problem& p, double eps, VectorXd w,
 // steps each). Throws std::runtime_error naming the eps where Newton did not converge.
 std::vector<VectorXd> penalised_path_exactly(const Problem& p, const std::vector<double>& eps, ImplicitOrders orders = {});
 
-// The total force of the obstacle on the plate, eps^-1 int_{disk} (phi - w_h)^+.
-double penalised_force(const Problem& p, const VectorXd& w, double eps, ImplicitOrders orders = {});
+// The total force of the obstacle on the plate, eps^-1 int_{disk} (phi - w_h)^+, by the rule that
+// penalty_rule(p, &w) gives (a caller that needs the rule too makes it once).
+double penalised_force(const Problem& p, const PenaltyRule& rule, const VectorXd& w, double eps);
 
 }  // namespace plate

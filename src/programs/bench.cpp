@@ -112,7 +112,11 @@ struct Peer {
 };
 // "snesvi-rsls" (sequenced, as ours), "snesvi-rsls-cold" (max(phi, 0) on the finest grid alone).
 std::string peer_method(const Job& job) { return job.solver.substr(7, 4); }
-std::string peer_start(const Job& job) { return job.solver.size() > 11 ? "cold" : "sequenced"; }
+std::string peer_start(const Job& job) {
+  const std::string cold = "-cold";
+  return job.solver.size() > cold.size() && job.solver.compare(job.solver.size() - cold.size(), cold.size(), cold) == 0
+             ? "cold" : "sequenced";
+}
 
 // Runs a job in a child process and collects its measurements and its peak resident memory. A
 // peer's child becomes the PETSc program itself, which writes the same file.

@@ -287,7 +287,7 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
         const double eps = s.eps_values[k];
         const double mw = extremum_of_w(p.grid, path[k], 1).value;
         const PenaltyRule rule = penalty_rule(p, &path[k]);
-        const double force = parts * (rule.weights.array() * (sc.cylinder->height * (1 + s.perturb) - (rule.S * path[k]).array())).sum() / eps;
+        const double force = parts * penalised_force(p, rule, path[k], eps);
         our[k].w.push_back(mw), our[k].f.push_back(force);
         our[k].w_noise.push_back(1e-12 * std::abs(mw));
         our[k].f_noise.push_back(parts * rule.weights.sum() * 1e-12 * std::abs(mw) / eps);

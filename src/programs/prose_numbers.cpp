@@ -236,8 +236,8 @@ void bench_numbers(Numbers& num, const CsvTable& t) {
       for (std::size_t e : exact)
         if (t.text(e, "n") == t.text(r, "n")) over.add(t.number(r, "seconds") / t.number(e, "seconds"));
     }
-    std::string key = "bench." + peer.substr(7);
-    if (key.size() > 10) key[10] = '_';  // bench.rsls-cold -> bench.rsls_cold
+    std::string key = "bench." + peer.substr(7);  // bench.rsls, bench.rsls_cold, ...
+    std::replace(key.begin(), key.end(), '-', '_');
     num.put_range(key + "_over_ours", over, ratio, src + " " + peer + " seconds / exact seconds (certified runs)");
   }
 }
