@@ -26,11 +26,12 @@ namespace {
 // A fine sample starts held if the coarse solution, interpolated by its own Hermite cubics, lies on
 // or below phi there: a coarse contact line predicts the fine one to within a cell. (`margin`
 // also takes samples just above: the dual solver gives those a column of G, which costs little.)
-NodeSet predict_active(const Grid& coarse, const VectorXd& wc, const Problem& fine, double margin) {
+NodeSet predict_active(const Problem& coarse, const VectorXd& wc, const Problem& fine, double margin) {
   NodeSet A(fine.phi.size(), 0);
+  const PlateField field(coarse, wc);
   for (int q = 0; q < fine.phi.size(); ++q) {
     if (!std::isfinite(fine.phi[q])) continue;
-    const double w = evaluate(coarse, wc, fine.sampling.x[q], fine.sampling.y[q]).w;
+    const double w = field.at(fine.sampling.x[q], fine.sampling.y[q]).w;
     A[q] = w <= fine.phi[q] + margin;
   }
   return A;
@@ -52,7 +53,7 @@ ExactResult solve_rim(Problem& p, const ExactOptions& o, const Problem* coarse, 
   // the plate dips below it between rows: an averaged row cannot tell a gap smaller than that from
   // contact (on the paper's scene, n = 32, the diagonal's row lifts 5e-6 where the plate dips 8e-6).
   auto touch = [&](const Problem& q, const VectorXd& w) {
-    return std::max(o.tol * std::max(max_nodal_abs(w), 1e-300), dip_below_edge(q, w));
+    return std::max(o.tol * std::max(max_nodal_abs(w.head(q.grid.unknowns())), 1e-300), dip_below_edge(q, w));
   };
   if (coarse && rim_follows_contact(*coarse) && !coarse->sampling.rim.periodic) {
     const ContactArcs c = rim_contact(*coarse, wc, lc, touch(*coarse, wc));
@@ -72,7 +73,7 @@ ExactResult solve_rim(Problem& p, const ExactOptions& o, const Problem* coarse, 
     if (!layout.periodic) {
       lay_out_rim(p, layout);
       ++layouts;
-      initial = coarse && round == 0 ? predict_active(coarse->grid, wc, p, margin) : predict_active(p.grid, r.w, p, margin);
+      initial = coarse && round == 0 ? predict_active(*coarse, wc, p, margin) : predict_active(p, r.w, p, margin);
     }
     r = solve_exact_rows(p, o, initial, layout.periodic ? RowExchange{} : exchange, &chol);
     exchanged += r.levels.back().exchanged;
@@ -104,8 +105,8 @@ ExactResult solve_sequenced(Problem& p, const ExactOptions& o) {
     lc = std::move(rc.lambda);
   }
   const auto t0 = Clock::now();
-  const double margin = p.sampling.nodal_bounds() || !wc.size() ? 0.0 : 1e-4 * max_nodal_abs(wc);
-  NodeSet initial = wc.size() ? predict_active(coarse->grid, wc, p, margin) : NodeSet{};
+  const double margin = p.sampling.nodal_bounds() || !wc.size() ? 0.0 : 1e-4 * max_nodal_abs(wc.head(coarse->grid.unknowns()));
+  NodeSet initial = wc.size() ? predict_active(*coarse, wc, p, margin) : NodeSet{};
   const double seconds_predict = seconds_since(t0);
   ExactResult r = rim_follows_contact(p) ? solve_rim(p, o, coarse ? &*coarse : nullptr, wc, lc, margin, initial)
                                          : solve_exact(p, o, std::move(initial));
@@ -133,6 +134,12 @@ SceneSolution solve_exact_scene(const Scene& scene, int n, const SamplingSpec& s
   s.part_w = std::move(s.result.w), s.part_lambda = std::move(s.result.lambda);
   const Sampling& whole = s.unfolded->sampling;
   s.result.w = unfold_unknowns(g, s.solved.grid, s.part_w);
+  if (s.solved.kink) {  // the part's functions (D31) as the whole plate's, each spline its own
+    VectorXd c;
+    attach_kink(*s.unfolded, unfold_kink(*s.solved.kink, s.part_w.tail(s.solved.kink->size()), c));
+    s.result.w.conservativeResize(s.unfolded->unknowns());
+    s.result.w.tail(c.size()) = c;
+  }
   s.result.lambda = unfold_samples(whole, s.solved.sampling, s.solved.grid, s.part_lambda);
   VectorXd held(s.result.active.size());
   for (size_t q = 0; q < s.result.active.size(); ++q) held[q] = s.result.active[q];

@@ -33,6 +33,29 @@ PointValues evaluate(const Grid& g, const VectorXd& w, double x, double y) {
   return v;
 }
 
+namespace {
+PointValues plus(const PointValues& a, const PointValues& b) {
+  return {a.w + b.w, a.wx + b.wx, a.wy + b.wy, a.wxx + b.wxx, a.wxy + b.wxy, a.wyy + b.wyy};
+}
+}  // namespace
+
+PlateField::PlateField(const Problem& p, const VectorXd& w) : p_(p), w_(w) {
+  if (p.kink) c_ = w.tail(p.kink->size()), Pc_ = p.kink_interp * c_;
+}
+
+PointValues PlateField::enrichment_at(double x, double y) const {
+  if (!p_.kink) return {0, 0, 0, 0, 0, 0};
+  const KinkValue k = kink_field(p_.grid, *p_.kink, c_, Pc_, x, y);
+  return {k.w, k.wx, k.wy, k.wxx, k.wxy, k.wyy};
+}
+
+PointValues PlateField::at(double x, double y) const {
+  const PointValues v = evaluate(p_.grid, w_, x, y);
+  return p_.kink ? plus(v, enrichment_at(x, y)) : v;
+}
+
+PointValues evaluate(const Problem& p, const VectorXd& w, double x, double y) { return PlateField(p, w).at(x, y); }
+
 // @region moments
 // Moments after (9), with Kirchhoff's sign of nu.
 Moments bending_moments(double wxx, double wxy, double wyy, double nu) {
@@ -79,9 +102,10 @@ double dip_below_edge(const Problem& p, const VectorXd& w) {
   if (!has_edge(p.spec.kind) || p.scene.edge.empty()) return NAN;
   const EdgePoints e = edge_points(p.scene.edge, p.grid.h / 32);
   double dip = 0;
+  const PlateField field(p, w);
   for (int k = 0; k < e.size(); ++k) {
     const double phi = obstacle_on_edge(obstacle, e.x[k], e.y[k], e.nx[k], e.ny[k], p.grid.h);
-    if (std::isfinite(phi)) dip = std::max(dip, phi - evaluate(p.grid, w, e.x[k], e.y[k]).w);
+    if (std::isfinite(phi)) dip = std::max(dip, phi - field.at(e.x[k], e.y[k]).w);
   }
   return dip;
 }
@@ -94,6 +118,7 @@ NodalFields nodal_fields(const Problem& p, const VectorXd& w, const VectorXd& xi
   const Field& obstacle = p.scene.obstacle;
   const Grid& g = p.grid;
   const VectorXd force = p.sampling.S.transpose() * p.sampling.weights.cwiseProduct(xi_samples);
+  const PlateField field(p, w);
   NodalFields f;
   for (int j = 0; j <= g.ny; ++j)
     for (int i = 0; i <= g.nx; ++i) {
@@ -105,6 +130,10 @@ NodalFields nodal_fields(const Problem& p, const VectorXd& w, const VectorXd& xi
           avg = {avg.w + v.w, avg.wx + v.wx, avg.wy + v.wy, avg.wxx + v.wxx, avg.wxy + v.wxy, avg.wyy + v.wyy};
           ++count;
         }
+      if (p.kink && g.is_interior(i, j)) {  // (D31) vanishes at the nodes with its slopes; one element's curvatures
+        const PointValues e = field.enrichment_at(g.x(i), g.y(j));
+        avg = plus(avg, PointValues{0, 0, 0, e.wxx * count, e.wxy * count, e.wyy * count});
+      }
       const double k = 1.0 / count;
       const double x = g.x(i), y = g.y(j), phi = obstacle(x, y);
       const double value = avg.w * k;

@@ -13,6 +13,21 @@ struct PointValues {
 
 // Hermite evaluation of w_h at (x, y); throws std::invalid_argument outside the rectangle.
 PointValues evaluate(const Grid& g, const VectorXd& w, double x, double y);
+// The field w of p's space, to be read at many points: with the enrichment (D31), its share is
+// added (a grid-only evaluation of such a field is right at the nodes alone).
+class PlateField {
+ public:
+  PlateField(const Problem& p, const VectorXd& w);
+  PointValues at(double x, double y) const;
+  PointValues enrichment_at(double x, double y) const;  // the enrichment's share alone (zero without one)
+
+ private:
+  const Problem& p_;
+  const VectorXd& w_;
+  VectorXd c_, Pc_;  // the enrichment's coefficients, and its interpolant's
+};
+// One point of it.
+PointValues evaluate(const Problem& p, const VectorXd& w, double x, double y);
 
 struct Moments {
   double m11, m12, m22;

@@ -32,7 +32,7 @@ CheckValues solve_ours(const Scene& s, int n, const SamplingSpec& spec) {
   v.certified = x.converged;
   for (const ExactLevel& l : x.levels) v.iterations += l.pdas_iterations;
   v.max_w = max_nodal_abs(x.w);
-  for (const CheckPoint& c : kCheckPoints) v.w_at.push_back(evaluate(p.grid, x.w, c.x, c.y).w);
+  for (const CheckPoint& c : kCheckPoints) v.w_at.push_back(evaluate(p, x.w, c.x, c.y).w);
   // Round-off of the problem solved (the part, when mirrors were used), at the whole plate's points.
   const SolutionRoundoff roundoff(scene.solved, scene.part_w, scene.part_lambda);
   const Grid& g = p.grid;

@@ -29,7 +29,7 @@ struct Schur {
     G.conservativeResize(m, m);
     for (int first = old; first < m; first += kGramBlock) {
       const int cols = std::min(kGramBlock, m - first);
-      if (rhs.rows() != p.grid.unknowns() || rhs.cols() != cols) rhs = Eigen::MatrixXd::Zero(p.grid.unknowns(), cols);
+      if (rhs.rows() != p.unknowns() || rhs.cols() != cols) rhs = Eigen::MatrixXd::Zero(p.unknowns(), cols);
       for (int k = 0; k < cols; ++k)
         for (RowSpMat::InnerIterator it(p.sampling.S, rows[first + k]); it; ++it) rhs(it.col(), k) = it.value();
       const auto Z = chol.solve_many(rhs);
@@ -126,7 +126,7 @@ ExactResult solve_exact_rows(Problem& p, const ExactOptions& o, const NodeSet& c
       level.dual_steps += d.steps;
       level.dependent_rows += d.dependent;
       mu = d.mu;
-      VectorXd force = VectorXd::Zero(p.grid.unknowns());  // S_C^T mu
+      VectorXd force = VectorXd::Zero(p.unknowns());  // S_C^T mu
       for (size_t i = 0; i < schur.rows.size(); ++i)
         if (mu[i] != 0)
           for (RowSpMat::InnerIterator it(p.sampling.S, schur.rows[i]); it; ++it) force[it.col()] += mu[i] * it.value();

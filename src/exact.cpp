@@ -23,7 +23,7 @@ double Certificate::worst() const {
 // @region certificate
 Certificate certify(const Problem& p, const VectorXd& w, const VectorXd& lambda) {
   Certificate c;
-  const double wmax = value_scale(w), lmax = force_scale(lambda);
+  const double wmax = value_scale(w.head(p.grid.unknowns())), lmax = force_scale(lambda);
   const VectorXd Sw = p.sampling.S * w;
   for (int q = 0; q < p.phi.size(); ++q) {
     const double gap = Sw[q] - p.phi[q];  // +inf where there is no obstacle
@@ -79,7 +79,7 @@ void validate(const ExactOptions& o) {
 }
 
 double answer_scale(const Problem& p, const VectorXd& w_free) {
-  double s = max_nodal_abs(w_free);
+  double s = max_nodal_abs(w_free.head(p.grid.unknowns()));
   for (int q = 0; q < p.phi.size(); ++q)
     if (std::isfinite(p.phi[q])) s = std::max(s, std::abs(p.phi[q]));
   return s;

@@ -25,9 +25,11 @@ Extremum pattern_maximum(const Grid& g, const std::function<double(double, doubl
 }
 
 // @region newton-extremum
-Extremum extremum_of_w(const Grid& g, const VectorXd& w, double sign, int starts) {
+namespace {
+template <class At>
+Extremum extremum_of(const Grid& g, const At& at, double sign, int starts) {
   const double lx = g.whole_lx(), ly = g.whole_ly();
-  auto value = [&](double x, double y) { return sign * evaluate(g, w, x, y).w; };
+  auto value = [&](double x, double y) { return sign * at(x, y).w; };
   // The best nodes of the whole plate (a part's are its images too: evaluate reflects).
   std::vector<Extremum> nodes;
   for (int j = 0; j <= g.whole_ny(); ++j)
@@ -40,7 +42,7 @@ Extremum extremum_of_w(const Grid& g, const VectorXd& w, double sign, int starts
     double x = nodes[s].x, y = nodes[s].y;
     bool settled = false;
     for (int it = 0; it < 30 && !settled; ++it) {
-      const PointValues v = evaluate(g, w, x, y);
+      const PointValues v = at(x, y);
       // Newton on grad(sign w) = 0: H d = -grad, H negative definite at a maximum of sign w.
       const double gx = sign * v.wx, gy = sign * v.wy, hxx = sign * v.wxx, hxy = sign * v.wxy, hyy = sign * v.wyy;
       const double det = hxx * hyy - hxy * hxy;
@@ -62,5 +64,15 @@ Extremum extremum_of_w(const Grid& g, const VectorXd& w, double sign, int starts
   return best;
 }
 // @end newton-extremum
+}  // namespace
+
+Extremum extremum_of_w(const Problem& p, const VectorXd& w, double sign, int starts) {
+  const PlateField field(p, w);
+  return extremum_of(p.grid, [&](double x, double y) { return field.at(x, y); }, sign, starts);
+}
+
+Extremum extremum_of_w(const Grid& g, const VectorXd& w, double sign, int starts) {
+  return extremum_of(g, [&](double x, double y) { return evaluate(g, w, x, y); }, sign, starts);
+}
 
 }  // namespace plate

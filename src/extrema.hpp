@@ -9,6 +9,7 @@
 #include <functional>
 
 #include "grid.hpp"
+#include "problem.hpp"
 #include "sparse.hpp"
 
 namespace plate {
@@ -18,9 +19,11 @@ struct Extremum {
 };
 
 // The largest value of `sign` w_h (sign +1: max w, -1: min w) on the rectangle of the whole plate
-// g holds, from the `starts` best nodes: Newton on grad w_h = 0, each step at most a cell, falling
+// p holds (its field with the enrichment (D31), if any), from the `starts` best nodes: Newton on grad w_h = 0, each step at most a cell, falling
 // back to the pattern search where the Hessian is not definite or a step goes outside; the best point
 // found is returned with its value of w_h (not of sign w_h).
+Extremum extremum_of_w(const Problem& p, const VectorXd& w, double sign, int starts = 3);
+// The same for a field of the grid's functions alone.
 Extremum extremum_of_w(const Grid& g, const VectorXd& w, double sign, int starts = 3);
 
 // The largest value of f on the whole plate from (x0, y0) by rounds of a 13 x 13 pattern about the

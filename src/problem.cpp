@@ -80,14 +80,35 @@ void check_obstacle_at_nodes(const Grid& g, const Field& obstacle) {
 
 // S^T W S. For Gauss sampling this equals the consistent mass matrix, which we assemble by
 // stencil instead of from 16 points per element.
-static SpMat sampling_mass(const Grid& g, const Sampling& s) {
-  if (s.kind == SamplingKind::Nodes || s.kind == SamplingKind::Edge) return weighted_gram(s.S, s.weights, g.unknowns());
+// The enrichment (D31) has no rows of S: it vanishes on the rim and inside it.
+static SpMat sampling_mass(const Problem& p) {
+  const Grid& g = p.grid;
+  const Sampling& s = p.sampling;
+  if (s.kind == SamplingKind::Nodes || s.kind == SamplingKind::Edge) return weighted_gram(s.S, s.weights, p.unknowns());
   // The Gauss rows by stencil, the edge rows (if any) by their Gram matrix.
   VectorXd edge_only = s.weights;
   edge_only.head(s.edge_begin).setZero();
   SpMat M = assemble_matrix(g, bfs_mass(g.h));
-  if (s.edge_size() > 0) M += weighted_gram(s.S, edge_only, g.unknowns());
+  M.conservativeResize(p.unknowns(), p.unknowns());
+  if (s.edge_size() > 0) M += weighted_gram(s.S, edge_only, p.unknowns());
   return M;
+}
+
+// S with a (zero) column for every unknown of the space, the enrichment's included.
+// With the enrichment, the functions psi_k - I_h psi_k are -I_h psi_k on the rim: their columns are -S P.
+static void fit_columns(Problem& p) {
+  const int N = p.grid.unknowns();
+  if (p.sampling.S.cols() == p.unknowns() || !p.kink) return;
+  const RowSpMat SP = p.sampling.S.leftCols(N) * p.kink_interp;
+  std::vector<Eigen::Triplet<double>> t;
+  for (Eigen::Index r = 0; r < p.sampling.S.outerSize(); ++r) {
+    for (RowSpMat::InnerIterator it(p.sampling.S, r); it; ++it)
+      if (it.col() < N) t.emplace_back(r, it.col(), it.value());
+    for (RowSpMat::InnerIterator it(SP, r); it; ++it) t.emplace_back(r, N + it.col(), -it.value());
+  }
+  RowSpMat S(p.sampling.S.rows(), p.unknowns());
+  S.setFromTriplets(t.begin(), t.end());
+  p.sampling.S = std::move(S);
 }
 
 namespace {
@@ -111,29 +132,63 @@ Problem make_samples(const Scene& s, const Grid& g, const SamplingSpec& spec) {
   check_obstacle_on_boundary(g, s.obstacle);
   check_obstacle_at_nodes(g, s.obstacle);
   // Without an edge curve the edge kinds keep their interior samples alone.
-  Problem p{g, make_sampling(g, spec.kind, s.edge, spec.rows), {}, {}, {}, {}, spec, s};
+  Problem p{g, make_sampling(g, spec.kind, s.edge, rows_on(g, s, spec)), {}, {}, {}, {}, spec, s, {}, {}, {}};
   sample_obstacle(p, s.obstacle, 0);
   return p;
 }
 
 void lay_out_rim(Problem& p, const RimLayout& layout) {
-  p.sampling = make_sampling(p.grid, p.spec.kind, p.scene.edge, p.spec.rows, layout);
+  p.sampling = make_sampling(p.grid, p.spec.kind, p.scene.edge, rows_on(p.grid, p.scene, p.spec), layout);
   sample_obstacle(p, p.scene.obstacle, 0);
-  p.M = sampling_mass(p.grid, p.sampling);
+  fit_columns(p);
+  p.M = sampling_mass(p);
 }
 
 void append_rim_points(Problem& p, const std::vector<double>& angles) {
   const int first = p.sampling.size();
   append_rim_points(p.grid, p.scene.edge, angles, p.sampling);
   sample_obstacle(p, p.scene.obstacle, first);
-  p.M = sampling_mass(p.grid, p.sampling);
+  fit_columns(p);
+  p.M = sampling_mass(p);
+}
+
+bool kink_on(const Grid& g, const Scene& s, const SamplingSpec& spec) {
+  return spec.enrich.on() && has_edge(spec.kind) && kink_fits(g, s.edge);
+}
+
+// @region kink-rows
+// With the kink carried (D31) the plate resolves the rim to order 4, and the rows' splines must too:
+// their knots H then go with h, two cells apart, rather than as h^(3/7) r^(4/7) (D12), which balanced
+// the rows against a plate that could not follow the kink.
+EdgeRows rows_on(const Grid& g, const Scene& s, const SamplingSpec& spec) {
+  EdgeRows rows = spec.rows;
+  if (kink_on(g, s, spec) && rows.cells == 0) rows.cells = 2;
+  return rows;
+}
+// @end kink-rows
+
+void attach_kink(Problem& p, const KinkEnrichment& e) {
+  p.kink = e;
+  p.kink_interp = kink_interpolant(p.grid, e);
+  fit_columns(p);
+  if (p.M.size()) p.M = sampling_mass(p);
 }
 
 Problem make_problem(const Scene& s, const Grid& g, const SamplingSpec& spec) {
   Problem p = make_samples(s, g, spec);
   p.K = assemble_matrix(g, bfs_stiffness(g.h));
-  p.M = sampling_mass(g, p.sampling);
   p.F = assemble_load(g, s.load, "load");
+  // (D31) on every grid it fits; a coarser grid of a sequence that it does not fit is plain.
+  if (kink_on(g, s, spec)) {
+    attach_kink(p, make_kink_enrichment(g, s.edge, spline_knots(s.edge.r, g.h, rows_on(g, s, spec))));
+    KinkBlocks blocks = assemble_kink_blocks(g, *p.kink, p.kink_interp, s.load);
+    p.K.conservativeResize(p.unknowns(), p.unknowns());
+    p.K += blocks.border;
+    p.kink_block = std::move(blocks.border);
+    p.F.conservativeResize(p.unknowns());
+    p.F.tail(p.kink->size()) = blocks.load;
+  }
+  p.M = sampling_mass(p);
   return p;
 }
 

@@ -1,10 +1,12 @@
 // One discrete obstacle problem: the grid, the sampling of the constraint, the obstacle at the
 // sample points, and the assembled stiffness, mass and load. Built once, solved many times.
 #pragma once
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "assemble.hpp"
+#include "kink_enrichment.hpp"
 #include "sampling.hpp"
 #include "scene.hpp"
 
@@ -15,6 +17,7 @@ namespace plate {
 struct SamplingSpec {
   SamplingKind kind = SamplingKind::Nodes;
   EdgeRows rows;  // edge rows at points, or averaged against B-splines (make_sampling)
+  EnrichSpec enrich;  // the space widened by (D31) on the scene's circle, or not
   SamplingSpec() = default;
   SamplingSpec(SamplingKind k, EdgeRows r = {}) : kind(k), rows(r) {}
 };
@@ -28,6 +31,14 @@ struct Problem {
   VectorXd F;    // (f, u)
   SamplingSpec spec;  // how `sampling` was made, so a coarser grid can be sampled alike
   Scene scene;        // what the problem discretises
+  // The functions (D31) adds after the grid's unknowns, the interpolant they subtract, and the part
+  // of K they bring (their border and their own block), kept apart for residuals in extended
+  // precision. None: the plain space.
+  std::optional<KinkEnrichment> kink;
+  SpMat kink_interp;
+  SpMat kink_block;
+  // Unknowns of the space: the grid's, then the enrichment's.
+  int unknowns() const { return grid.unknowns() + (kink ? kink->size() : 0); }
 };
 
 // The scene on the grid g (the whole rectangle, or a part of it: mirror.hpp), sampled as `spec`
@@ -38,6 +49,16 @@ Problem make_problem(const Scene& s, const Grid& g, const SamplingSpec& spec);
 // The grid, its sampling and the obstacle at the samples, without K, M and F: what the reports of
 // a solve on part of the plate read on the whole (mirror.hpp). Validates as make_problem does.
 Problem make_samples(const Scene& s, const Grid& g, const SamplingSpec& spec);
+
+// Whether the space on grid g is widened by (D31): asked for, edge sampling, and a circle it fits.
+bool kink_on(const Grid& g, const Scene& s, const SamplingSpec& spec);
+// The edge rows grid g gets: spec.rows, with splines two cells apart where (D31) is on and no spacing
+// was asked for.
+EdgeRows rows_on(const Grid& g, const Scene& s, const SamplingSpec& spec);
+
+// Gives p the enrichment e (D31): its interpolant, and a column of S for each of its functions
+// (their values on the rim, -I_h F_k). K and F are left as they are.
+void attach_kink(Problem& p, const KinkEnrichment& e);
 
 // The rows on p's circle laid out anew for a contact (rim_rows.hpp, D28): the sampling and the
 // obstacle at its samples remade; K and F kept; M remade.

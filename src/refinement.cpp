@@ -30,6 +30,10 @@ VectorXd extended_residual(const Problem& p, const VectorXd& w, const VectorXd& 
       for (int k = 0; k < 16; ++k)
         if (dofs[k] >= 0) r[dofs[k]] -= f[k];
     }
+  // The enrichment's border and block (D31), whose entries are the problem's as assembled.
+  for (Eigen::Index col = 0; col < p.kink_block.outerSize(); ++col)
+    for (SpMat::InnerIterator it(p.kink_block, col); it; ++it)
+      r[it.row()] -= static_cast<Extended>(it.value()) * static_cast<Extended>(w[col]);
   VectorXd out(r.size());
   for (size_t i = 0; i < r.size(); ++i) out[i] = static_cast<double>(r[i]);
   return out;
@@ -68,7 +72,7 @@ Refinement refine(const Problem& p, const Cholesky& chol, const std::vector<int>
       VectorXd rhs = extended_gap(p, w, rows);
       for (int i = 0; i < m; ++i) rhs[i] -= S.row(rows[i]).dot(z);
       dmu = factor.solve(rhs);
-      VectorXd push = VectorXd::Zero(p.grid.unknowns());  // S_A^T dmu
+      VectorXd push = VectorXd::Zero(p.unknowns());  // S_A^T dmu
       for (int i = 0; i < m; ++i)
         for (RowSpMat::InnerIterator it(S, rows[i]); it; ++it) push[it.col()] += dmu[i] * it.value();
       dw += chol.solve(push);

@@ -10,7 +10,7 @@ namespace plate {
 
 namespace {
 // The knot spacing of (D12) on p's circle, as an angle.
-double knot_angle(const Problem& p) { return 2 * M_PI / spline_knots(p.scene.edge.r, p.grid.h, p.spec.rows); }
+double knot_angle(const Problem& p) { return 2 * M_PI / spline_knots(p.scene.edge.r, p.grid.h, rows_on(p.grid, p.scene, p.spec)); }
 double cell_angle(const Problem& p) { return p.grid.h / p.scene.edge.r; }
 // The lattice of the exchange: eight steps to each spacing of the points of edge_points.
 double exchange_step(size_t points) { return 2 * M_PI / (8.0 * points); }
@@ -67,11 +67,12 @@ std::vector<double> rim_dips(const Problem& p, const VectorXd& w, double slack) 
   const Grid& g = p.grid;
   const EdgeCurve& c = p.scene.edge;
   const Sampling& s = p.sampling;
+  const PlateField field(p, w);
   auto point = [&](double t, double& x, double& y) { x = c.cx + c.r * std::cos(t), y = c.cy + c.r * std::sin(t); };
   auto gap = [&](double t) {
     double x, y;
     point(t, x, y);
-    return evaluate(g, w, x, y).w - obstacle_on_edge(obstacle, x, y, -std::cos(t), -std::sin(t), g.h);
+    return field.at(x, y).w - obstacle_on_edge(obstacle, x, y, -std::cos(t), -std::sin(t), g.h);
   };
   auto free_here = [&](double t) {  // on the grid's part and off every spline arc
     double x, y;

@@ -52,12 +52,12 @@ TEST(RimRows, LiftOffScenesKeepThePlateOutOfTheObstacle) {
       dips.push_back(dip_below_edge(x.whole(), x.result.w));
       const LineForce q = line_force(x.whole(), x.result.lambda);
       EXPECT_GE(q.min, -1e-9 * q.max);
-      max_w = extremum_of_w(x.whole().grid, x.result.w, +1).value;
+      max_w = extremum_of_w(x.whole(), x.result.w, +1).value;
     }
     std::printf("lift-off %g x %g, centre (%g, %g): dips %.2e %.2e\n", s.lx, s.ly, s.cx, s.cy, dips[0], dips[1]);
     EXPECT_LE(dips[0], 1e-5 * R) << s.lx << " " << s.cx;
     EXPECT_LE(dips[1], dips[0] / 4) << s.lx << " " << s.cx;
     const SceneSolution points = lift_off(s, 2 * s.n, EdgeRows::points());
-    EXPECT_NEAR(max_w, extremum_of_w(points.whole().grid, points.result.w, +1).value, 2e-5 * max_w) << s.lx << " " << s.cx;
+    EXPECT_NEAR(max_w, extremum_of_w(points.whole(), points.result.w, +1).value, 2e-5 * max_w) << s.lx << " " << s.cx;
   }
 }

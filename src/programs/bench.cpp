@@ -96,7 +96,7 @@ std::map<std::string, double> run_job(const Job& job, const Scene& scene, std::v
     v["converged"] = r.converged;
   }
   v["seconds"] = seconds_since(t1);
-  v["w_centre"] = evaluate(p.grid, w, 0.5, 0.5).w;
+  v["w_centre"] = evaluate(p, w, 0.5, 0.5).w;
   for (Eigen::Index q = 0; q < w.size() / 4; ++q) nodal.push_back(w[4 * q]);
   return v;
 }

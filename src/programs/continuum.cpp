@@ -85,8 +85,8 @@ Row solve_one(const Variant& v, int n, const Scene& scene) {
     if (std::abs(f.m12[k]) > std::abs(f.m12[twist])) twist = k;
   }
   row.max_w = f.w[top], row.m12 = std::abs(f.m12[twist]);
-  row.w_mid = evaluate(p.grid, x.result.w, 0.5, 0.125).w;
-  row.w_diag = evaluate(p.grid, x.result.w, 0.25, 0.25).w;
+  row.w_mid = evaluate(p, x.result.w, 0.5, 0.125).w;
+  row.w_diag = evaluate(p, x.result.w, 0.25, 0.25).w;
   row.force = total_contact_force(p, x.result.lambda);
   row.mean_line = row.force / (2 * M_PI * scene.cylinder->radius);  // with f = 0 the whole push is on the rim
   row.line = line_force(p, x.result.lambda);

@@ -285,7 +285,7 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
       const std::vector<VectorXd> path = penalised_path_exactly(p, s.eps_values);
       for (size_t k = 0; k < path.size(); ++k) {
         const double eps = s.eps_values[k];
-        const double mw = extremum_of_w(p.grid, path[k], 1).value;
+        const double mw = extremum_of_w(p, path[k], 1).value;
         const PenaltyRule rule = penalty_rule(p, &path[k]);
         const double force = parts * penalised_force(p, rule, path[k], eps);
         our[k].w.push_back(mw), our[k].f.push_back(force);

@@ -68,7 +68,7 @@ Run solve(const Case& s, const Rows& r, int n) {
   Run run{&s, &r, n, s.lx / n};
   run.seconds = seconds_since(t0);
   run.certified = x.result.converged;
-  run.max_w = extremum_of_w(x.whole().grid, x.result.w, +1).value;
+  run.max_w = extremum_of_w(x.whole(), x.result.w, +1).value;
   run.force = total_contact_force(x.whole(), x.result.lambda);
   run.dip = dip_below_edge(x.whole(), x.result.w);
   const Sampling& sam = x.whole().sampling;

@@ -47,11 +47,12 @@ Extremes extremes(const NodalFields& f) {
 
 void measure(Report& r, const Problem& p, const VectorXd& w, double nu) {
   r.w_at_points.clear();
-  for (const auto& [x, y] : r.points) r.w_at_points.push_back(evaluate(p.grid, w, x, y).w);
-  r.max_w = extremum_of_w(p.grid, w, +1);
-  r.min_w = extremum_of_w(p.grid, w, -1);
+  const PlateField field(p, w);
+  for (const auto& [x, y] : r.points) r.w_at_points.push_back(field.at(x, y).w);
+  r.max_w = extremum_of_w(p, w, +1);
+  r.min_w = extremum_of_w(p, w, -1);
   // |m12| = (1 - nu) |w_xy|, continuous for these elements: from the best node, by the pattern.
-  const auto twist = [&](double x, double y) { return std::abs(bending_moments(0, evaluate(p.grid, w, x, y).wxy, 0, nu).m12); };
+  const auto twist = [&](double x, double y) { return std::abs(bending_moments(0, field.at(x, y).wxy, 0, nu).m12); };
   Extremum best{-1, 0, 0};
   for (int j = 0; j <= p.grid.whole_ny(); ++j)
     for (int i = 0; i <= p.grid.whole_nx(); ++i)
@@ -201,7 +202,7 @@ std::string summary_json(const Report& r) {
   for (const auto& [k, v] : r.config) j["config"][k] = v;
   j["grid"] = {{"nx", p.grid.nx}, {"ny", p.grid.ny}, {"h", number(p.grid.h)}, {"unknowns", p.grid.unknowns()},
                {"sample_points", p.sampling.size()}};
-  j["model"] = {{"part", r.model}, {"unknowns", r.model_unknowns > 0 ? r.model_unknowns : p.grid.unknowns()}};
+  j["model"] = {{"part", r.model}, {"unknowns", r.model_unknowns > 0 ? r.model_unknowns : p.grid.unknowns()}, {"space", r.space}};
   j["converged"] = s.converged;
   j["message"] = s.message;
   j["eps_final"] = number(s.eps / r.eps_unit);
@@ -253,7 +254,7 @@ std::string summary_text(const Report& r) {
   o << (s.converged ? "converged" : "NOT CONVERGED: " + s.message) << "\n";
   o << "solved on: " << r.model;
   if (r.model_unknowns > 0) o << ", " << r.model_unknowns << " unknowns";
-  o << "\n";
+  o << "\nspace: " << r.space << "\n";
   if (!s.levels.empty()) {
     o << "levels (eps: iterations):";
     for (const auto& l : s.levels) o << " " << num(l.eps / r.eps_unit) << ":" << l.iterations;

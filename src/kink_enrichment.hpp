@@ -1,0 +1,82 @@
+// Eq. (D31): functions that carry the kink a line load on a circle puts into the plate. Where the
+// plate rests on the rim r = a, its third normal derivative jumps by the line load q(theta); a
+// bicubic cut by the circle cannot follow that, and the whole plate pays for it at order 3. The
+// space is widened by
+//   psi_k = chi (F_k - I_h F_k),   F_k(r, theta) = (r - a)_+^3 B_k(theta),
+// B_k the periodic cubic B-splines of the angle, I_h the grid's Hermite interpolant (nodal values,
+// slopes and twist), chi(d) a cut-off of the distance d = r - a: 1 up to 1.5 cells outside the rim,
+// 0 from 2.5 cells on. F_k is C^2 with its third radial derivative jumping by 6 B_k at the rim, so
+// psi_k is in H^2 (the space stays conforming) and carries the jump. Subtracting I_h F_k makes
+// psi_k vanish with its slopes and twist at every node: the grid's unknowns stay the nodal values of
+// the whole field, and psi_k is small wherever F_k is smooth, so the enlarged system is as well
+// conditioned as K (the stable GFEM of Babuska and Banerjee, CMAME 201-204, 2012). The cut-off keeps
+// each psi_k on a few cells about the rim, where the part that is not small lives. A part of the
+// plate (mirror.hpp) gets the sums of each spline with its mirror images, so every function is
+// symmetric as the solution is.
+#pragma once
+#include <vector>
+
+#include "assemble.hpp"
+#include "edge.hpp"
+#include "grid.hpp"
+#include "sparse.hpp"
+
+namespace plate {
+
+// The cut-off chi of (D31): 1 up to this many cells outside the rim (every square the rim cuts lies
+// within sqrt(2) cells of it), 0 from the second on.
+constexpr double kKinkFlatCells = 1.5, kKinkZeroCells = 2.5;
+
+// How the space is widened: not at all, or with (D31) on the scene's circle.
+struct EnrichSpec {
+  enum class Kind { None, Ring };
+  Kind kind = Kind::None;
+  bool on() const { return kind == Kind::Ring; }
+};
+
+struct KinkEnrichment {
+  double cx = 0, cy = 0, a = 0;
+  double inner = 0, outer = 0;          // chi = 1 for d <= inner, 0 for d >= outer
+  int knots = 0;                        // M: periodic splines on the whole circle, centred at 2 pi j / M
+  std::vector<int> function_of_spline;  // spline j belongs to function function_of_spline[j]
+  int functions = 0;
+  int size() const { return functions; }
+};
+
+// Whether (D31) fits grid g: the circle at least two cells across its radius and its band (with the
+// cells it touches) clear of every clamped edge, 4 cells. A coarser grid of a sequence that fails this is solved in the plain space.
+bool kink_fits(const Grid& g, const EdgeCurve& circle);
+
+// The enrichment of (D31) for a circle on grid g (a whole plate or a part), with the `knots` of the
+// edge rows' splines; throws std::invalid_argument naming --enrich if the curve is not a circle or
+// (D31) does not fit.
+KinkEnrichment make_kink_enrichment(const Grid& g, const EdgeCurve& circle, int knots);
+
+// F_k of (D31) at (x, y): value and derivatives (before the interpolant is subtracted).
+struct KinkValue {
+  double w = 0, wx = 0, wy = 0, wxx = 0, wxy = 0, wyy = 0;
+};
+KinkValue kink_profile(const KinkEnrichment& e, int k, double x, double y);
+
+// The Hermite interpolant of each F_k: P(i, k) = unknown i of F_k at its node (N x functions).
+SpMat kink_interpolant(const Grid& g, const KinkEnrichment& e);
+
+// The blocks (D31) adds to the plate's system, integrated in polar coordinates on each cell near the
+// rim, split wherever the integrand is not smooth: (Lap phi_i, Lap psi_k) in the rows of the grid's
+// unknowns with its transpose and (Lap psi_k, Lap psi_l) (a square matrix of all unknowns, zero in
+// the grid's block), and the load (f, psi_k).
+struct KinkBlocks {
+  SpMat border;
+  VectorXd load;
+};
+KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const SpMat& interpolant, const Field& f);
+
+// sum_k c_k psi_k at (x, y), a point of the whole plate (a part reads its image), with Pc = P c the
+// interpolant's coefficients: the enrichment's share of the field.
+KinkValue kink_field(const Grid& g, const KinkEnrichment& e, const VectorXd& c, const VectorXd& Pc, double x, double y);
+
+// The enrichment of a part (mirror.hpp) on the whole plate: every spline its own function, its
+// coefficient that of the part's function it belongs to.
+KinkEnrichment unfold_kink(const KinkEnrichment& part, const VectorXd& c_part, VectorXd& c_whole);
+
+}  // namespace plate
