@@ -30,21 +30,31 @@ nlohmann::json run_json(const std::string& args) {
 }  // namespace
 
 // `plate` on the paper's scene, an off-centre cylinder and a 1.25 x 1 plate with the cylinder off
-// both centre lines, n = 128 (160 for the 1.25 plate): max w and the total force each carry a bar
-// from the run's own grids that holds its distance from the series' answer and is at most ten times
-// it; max w is the field's peak, within 1e-7 (absolute) of the series' even where it lies between
-// nodes (the nodal maximum of the off-centre scene is 3.7e-6 short). The JSON says what each bound
-// is about.
+// both centre lines: max w and the total force each carry a bar from the run's own grids that holds
+// its distance from the series' answer; max w is the field's peak, within 1e-7 (absolute) of the
+// series' even where it lies between nodes (the nodal maximum of the off-centre scene is 3.7e-6
+// short). The JSON says what each bound is about. In the plain space (n = 128, 160 for the 1.25
+// plate) every bar is at most ten times the error. With the kink carried (D31, the default) the
+// values converge at order 4, where a last difference is some 15 times the error: a bar from
+// Richardson (n = 256, 320, whose four grids all carry the kink) must be within ten times it, and
+// every other bar must hold the error.
 TEST(ErrorBar, PlateBarsHoldTheDistanceToTheSeries) {
   struct Case {
     std::string args;
     Scene scene;
   };
-  const Case cases[] = {{"-n 128", paper_scene()},
-                        {"-n 128 --centre 0.45,0.5", cylinder_scene(1, 1, Cylinder{0.45, 0.5, 0.25, 0.0625})},
-                        {"-n 160 --lx 1.25 --centre 0.6,0.45", cylinder_scene(1.25, 1, Cylinder{0.6, 0.45, 0.25, 0.0625})}};
+  const Scene off_centre = cylinder_scene(1, 1, Cylinder{0.45, 0.5, 0.25, 0.0625});
+  const Scene oblong = cylinder_scene(1.25, 1, Cylinder{0.6, 0.45, 0.25, 0.0625});
+  const Case cases[] = {{"-n 128 --enrich none", paper_scene()},
+                        {"-n 128 --enrich none --centre 0.45,0.5", off_centre},
+                        {"-n 160 --enrich none --lx 1.25 --centre 0.6,0.45", oblong},
+                        {"-n 256", paper_scene()},
+                        {"-n 256 --centre 0.45,0.5", off_centre},
+                        {"-n 320 --lx 1.25 --centre 0.6,0.45", oblong}};
   for (const Case& c : cases) {
     const nlohmann::json j = run_json(c.args);
+    const bool plain = c.args.find("--enrich none") != std::string::npos;
+    EXPECT_EQ(j["model"]["space"].get<std::string>().find("(D31)") == std::string::npos, plain) << c.args;
     const RimAnswer series = rim_answer(c.scene, 6, false, 3);
     ASSERT_TRUE(series.premise.holds) << c.args;
     const RimPeak peak = series.finest.max_w();
@@ -53,9 +63,12 @@ TEST(ErrorBar, PlateBarsHoldTheDistanceToTheSeries) {
     EXPECT_NEAR(j["max_w_at"][0].get<double>(), peak.x, 1e-4) << c.args;
     for (const auto& [key, field, truth] : {std::tuple{"max w", "max_w", peak.w}, {"total contact force", "total_contact_force", force}}) {
       const double err = std::abs(j[field].get<double>() - truth), bar = j["error_bars"][key]["bar"].get<double>();
-      std::printf("%s %s: error %.2e, bar %.2e (%s)\n", c.args.c_str(), key, err, bar, j["error_bars"][key]["basis"].get<std::string>().c_str());
+      const std::string basis = j["error_bars"][key]["basis"].get<std::string>();
+      std::printf("%s %s: error %.2e, bar %.2e (%s)\n", c.args.c_str(), key, err, bar, basis.c_str());
       EXPECT_GE(bar, err) << c.args << " " << key;
-      EXPECT_LE(bar, 10 * err) << c.args << " " << key;
+      if (plain || basis == "richardson") {
+        EXPECT_LE(bar, 10 * err) << c.args << " " << key;
+      }
     }
     EXPECT_NE(j["certificate_is"].get<std::string>().find("discrete"), std::string::npos);
     EXPECT_NE(j["error_bar_is"].get<std::string>().find("continuum"), std::string::npos);
@@ -63,9 +76,10 @@ TEST(ErrorBar, PlateBarsHoldTheDistanceToTheSeries) {
 }
 
 // On a scene where the plate lifts off part of the rim (no series to hold it to), the bar from the
-// four grids n/8 ... n holds the distance to the answer of a grid four times finer.
+// four grids n/8 ... n holds the distance to the answer of a grid twice finer (n = 24 is the first
+// grid the kink-carrying space (D31) fits on this plate, so the four grids end at 192).
 TEST(ErrorBar, LiftOffBarHoldsAFinerAnswer) {
-  const nlohmann::json coarse = run_json("-n 96 --lx 1.5 --centre 0.75,0.5"), fine = run_json("-n 384 --lx 1.5 --centre 0.75,0.5 --estimate off");
+  const nlohmann::json coarse = run_json("-n 192 --lx 1.5 --centre 0.75,0.5"), fine = run_json("-n 384 --lx 1.5 --centre 0.75,0.5 --estimate off");
   const nlohmann::json& b = coarse["error_bars"]["max w"];
   EXPECT_GE(b["bar"].get<double>(), std::abs(coarse["max_w"].get<double>() - fine["max_w"].get<double>()));
   EXPECT_EQ(coarse["error_bars"]["grids"].size(), 4u);

@@ -127,7 +127,7 @@ struct Options {
   int n = static_cast<int>(plate::paper::kSide / plate::paper::kH + 0.5);
   double lx = plate::paper::kSide, ly = plate::paper::kSide;
   std::string obstacle = "cylinder", load = plate::fmt("%.17g", plate::paper::kLoad), scheme = "exact", sampling = "edge", edge = "auto", edge_rows = "auto",
-              symmetry = "auto", estimate = "auto";
+              symmetry = "auto", estimate = "auto", enrich = "auto";
   double R = plate::paper::kObstacleHeight, radius = plate::paper::kObstacleRadius, nu = plate::kPoissonRatio;
   std::string centre = plate::fmt("%.17g", plate::paper::kObstacleCx) + "," + plate::fmt("%.17g", plate::paper::kObstacleCy);
   plate::SolveOptions opt;
@@ -142,6 +142,31 @@ struct Options {
 
 // The options in groups by what they belong to, so that a scheme refuses by name the options of the
 // groups it has no use for (refuse_group below), and --help lists them so.
+void add_exact_options(CLI::App& app, Options& o) {
+  o.exact = app.add_option_group("The exact scheme", "--scheme exact");
+  o.exact->add_option("--symmetry", o.symmetry,
+                      "auto (solve on the half or quarter of the plate that the scene's mirror lines x = lx/2, y = ly/2 "
+                      "leave, found by checking phi and f at every sample against its mirror image; the outputs are the "
+                      "whole plate's) or none (always the whole plate)")
+      ->check(CLI::IsMember({"auto", "none"}))
+      ->capture_default_str();
+  o.exact->add_option("--estimate", o.estimate,
+                      "auto (an error bar on each answer's distance from the plate's own, from the grids n/8, n/4, n/2 "
+                      "that grid sequencing solves anyway (D29): Richardson where the observed order is steady, else the "
+                      "last differences, marked NOT STEADY) or off")
+      ->check(CLI::IsMember({"auto", "off"}))
+      ->capture_default_str();
+  o.exact->add_option("--enrich", o.enrich,
+                      "auto (on a circle with edge sampling, the space widened by functions that carry the kink of the "
+                      "line load at the rim (D31), on every grid of the sequence where the circle is at least 2 cells "
+                      "in radius and 5 cells from the clamped edges; the plain space elsewhere), ring (the same, and an "
+                      "error where it does not fit the grid asked for) or none (the plain space)")
+      ->check(CLI::IsMember({"auto", "ring", "none"}))
+      ->capture_default_str();
+  o.exact->add_flag("--no-globalise", o.no_globalise, "end with an error if the active set repeats, instead of the monotone fallback");
+  o.exact->add_flag("--no-nested", o.no_nested, "start from an empty active set, not from the coarser grid");
+}
+
 void add_options(CLI::App& app, Options& o) {
   app.get_formatter()->column_width(34);
   app.add_option("--scheme", o.scheme,
@@ -197,21 +222,7 @@ void add_options(CLI::App& app, Options& o) {
       ->capture_default_str();
   o.csv_opt = o.grid->add_option("--csv", o.csv_path, "write the nodal fields (CSV) here");
 
-  o.exact = app.add_option_group("The exact scheme", "--scheme exact");
-  o.exact->add_option("--symmetry", o.symmetry,
-                      "auto (solve on the half or quarter of the plate that the scene's mirror lines x = lx/2, y = ly/2 "
-                      "leave, found by checking phi and f at every sample against its mirror image; the outputs are the "
-                      "whole plate's) or none (always the whole plate)")
-      ->check(CLI::IsMember({"auto", "none"}))
-      ->capture_default_str();
-  o.exact->add_option("--estimate", o.estimate,
-                      "auto (an error bar on each answer's distance from the plate's own, from the grids n/8, n/4, n/2 "
-                      "that grid sequencing solves anyway (D29): Richardson where the observed order is steady, else the "
-                      "last differences, marked NOT STEADY) or off")
-      ->check(CLI::IsMember({"auto", "off"}))
-      ->capture_default_str();
-  o.exact->add_flag("--no-globalise", o.no_globalise, "end with an error if the active set repeats, instead of the monotone fallback");
-  o.exact->add_flag("--no-nested", o.no_nested, "start from an empty active set, not from the coarser grid");
+  add_exact_options(app, o);
 
   o.penalty = app.add_option_group("The penalty schemes", "--scheme nonlinear or linear");
   o.eps_opt = o.penalty->add_option("--eps", o.eps_fixed,
@@ -284,7 +295,7 @@ struct Run {
 // The answer's values on one grid of the sequence, for the error bars.
 struct LevelAnswer {
   int cells = 0;
-  bool certified = false;
+  bool certified = false, enriched = false;
   double max_w = 0, min_w = 0, force = 0, m12 = 0;
   std::vector<double> at_points;
 };
@@ -331,6 +342,15 @@ Run check(const Options& o) {
   else
     refuse_group(o.exact, "the penalty schemes (it applies to --scheme exact only)");
   r.use_mirrors = o.symmetry == "auto";
+  if (r.exact && o.enrich != "none") {
+    const bool circle = has_edge(r.spec.kind) && r.scene.edge.kind == EdgeCurve::Kind::Circle;
+    if (o.enrich == "ring" && !circle)
+      throw std::invalid_argument("--enrich ring needs edge sampling of a circle (--sampling edge, the cylinder or --edge circle:...)");
+    if (o.enrich == "ring" && !kink_fits(r.g, r.scene.edge))
+      throw std::invalid_argument("--enrich ring: the circle must be at least 2 cells in radius and 4 cells from every clamped edge "
+                                  "on this grid (h = " + fmt("%g", r.g.h) + ")");
+    if (circle) r.spec.enrich.kind = EnrichSpec::Kind::Ring;
+  }
   // The memory the model solved needs: the part the mirrors leave, for the exact scheme. A grid whose
   // smallest part would not fit is refused first, before the mirrors are looked for on all its nodes.
   if (r.exact && r.use_mirrors) check_memory(part_of(r.g, plate::Mirrors{r.g.nx % 2 == 0, r.g.ny % 2 == 0}));
@@ -376,14 +396,15 @@ LevelAnswer level_answer(const plate::Problem& p, const plate::ExactResult& x, c
   using namespace plate;
   LevelAnswer a;
   a.cells = p.grid.whole_nx();
+  a.enriched = p.kink.has_value();
   a.certified = x.converged;
-  a.max_w = extremum_of_w(p.grid, x.w, +1).value;
-  a.min_w = extremum_of_w(p.grid, x.w, -1).value;
+  a.max_w = extremum_of_w(p, x.w, +1).value;
+  a.min_w = extremum_of_w(p, x.w, -1).value;
   a.force = (1 << (int(p.grid.mirror_x) + int(p.grid.mirror_y))) * p.sampling.weights.dot(x.lambda);
   Report scratch;
   measure(scratch, p, x.w, r.nu);
   a.m12 = scratch.max_abs_m12.value;
-  for (const auto& [px, py] : r.report.points) a.at_points.push_back(evaluate(p.grid, x.w, px, py).w);
+  for (const auto& [px, py] : r.report.points) a.at_points.push_back(evaluate(p, x.w, px, py).w);
   return a;
 }
 
@@ -394,7 +415,8 @@ void set_error_bars(Run& r, const std::vector<LevelAnswer>& levels) {
   if (!r.estimate) return;
   std::vector<const LevelAnswer*> use;
   for (auto it = levels.rbegin(); it != levels.rend() && use.size() < 4; ++it) {
-    if (!it->certified || (!use.empty() && 2 * it->cells != use.back()->cells)) break;
+    // Grids of one space only: a coarser grid that (D31) did not fit converges otherwise.
+    if (!it->certified || (!use.empty() && (2 * it->cells != use.back()->cells || it->enriched != use.back()->enriched))) break;
     use.push_back(&*it);
   }
   std::reverse(use.begin(), use.end());
@@ -444,7 +466,10 @@ plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::Vec
   r.report.certificate = &exact.certificate;
   r.report.certificate_tol = r.exact_opt.tol;
   r.report.model = describe(scene.mirrors);
-  r.report.model_unknowns = scene.solved.grid.unknowns();
+  r.report.model_unknowns = scene.solved.unknowns();
+  r.report.space = scene.solved.kink ? "Bogner-Fox-Schmit and " + std::to_string(scene.solved.kink->size()) +
+                                           " functions carrying the kink at the rim (D31)"
+                                     : "Bogner-Fox-Schmit";
   r.report.refinement = exact.levels.back().refinement.w;
   return result;
 }

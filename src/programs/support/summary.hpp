@@ -29,6 +29,7 @@ struct Report {
   double eps_unit = 1;  // eps is printed divided by this, in the user's unit (plate: lx^4)
   std::string model = "whole plate";  // the part of the plate solved (mirror.hpp)
   int model_unknowns = 0;             // its unknowns; 0: the whole grid's
+  std::string space = "Bogner-Fox-Schmit";  // the finite-element space (with the enrichment D31, if any)
   std::vector<double> refinement;     // the exact solve's refinement steps, each correction's relative size
   double dip_below_edge = NAN;        // max of phi - w along the edge curve (NaN: no edge)
   // The extremes of the finite-element fields over the plate (extrema.hpp), found by the program
