@@ -4,7 +4,7 @@ BUILD ?= build
 JOBS  ?= $(shell getconf _NPROCESSORS_ONLN 2>/dev/null || echo 2)
 DRIVERS := $(BUILD)/table $(BUILD)/fig1 $(BUILD)/fig2 $(BUILD)/contraction $(BUILD)/hard_cases $(BUILD)/bench $(BUILD)/peer_snesvi \
            $(BUILD)/micro_bench $(BUILD)/continuum $(BUILD)/time_to_accuracy $(BUILD)/prose_numbers $(BUILD)/compare_tables $(BUILD)/rim_series \
-           $(BUILD)/liftoff
+           $(BUILD)/liftoff $(BUILD)/kink_study
 TESTS := $(BUILD)/unit_tests $(BUILD)/fine_tests $(BUILD)/program_tests $(BUILD)/freefem_tests $(BUILD)/document_tests
 BINS  := $(BUILD)/plate $(BUILD)/crosscheck $(BUILD)/crosscheck_penalty $(TESTS) $(DRIVERS)
 PAPER_NUMBERS := reference/paper_numbers.csv
@@ -30,13 +30,15 @@ CONTINUUM_DATA := results/continuum.md results/continuum.csv results/continuum_e
                   results/continuum_answer.md results/continuum_limits.csv results/continuum_timings.csv
 RIM_SERIES := results/rim_series.md results/rim_series.csv results/rim_answer.csv results/uniform_load.csv
 LIFTOFF   := results/liftoff.md results/liftoff.csv results/liftoff_timings.csv
+KINK_DATA := results/kink.md results/kink.csv
+KINK      := $(KINK_DATA) results/kink.svg results/kink.png
 CONTINUUM := $(CONTINUUM_DATA) results/continuum.svg results/continuum.png results/continuum_q.svg results/continuum_q.png
 BENCH     := results/speed_vs_error.csv results/speed_vs_error.md
 TTA       := results/time_to_accuracy.csv results/time_to_accuracy.md
 BENCH_ALL := $(BENCH) results/speed_vs_error.svg results/speed_vs_error.png results/micro_benchmarks.md \
              $(TTA) results/time_to_accuracy.svg results/time_to_accuracy.png
 PAPER_INPUTS := paper/paper.md paper/style.css $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp src/programs/*.cpp src/programs/support/*.cpp src/programs/support/*.hpp) \
-                $(RESULTS) $(RIM_SERIES) $(CONTINUUM) $(LIFTOFF) $(CROSSCHECK) $(RIM_FIGURE) $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) $(TABLE_FIGURE) $(HARD_CASES) $(BENCH_ALL) $(NUMBERS)
+                $(RESULTS) $(RIM_SERIES) $(CONTINUUM) $(LIFTOFF) $(KINK) $(CROSSCHECK) $(RIM_FIGURE) $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) $(TABLE_FIGURE) $(HARD_CASES) $(BENCH_ALL) $(NUMBERS)
 # The packages whose versions the document's reference list gives.
 VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread libmuparser-dev libcli11-dev freefem++ gmsh \
              libpetsc-real-dev libmumps-dev pandoc gnuplot-nox g++ cmake libgtest-dev libbenchmark-dev
@@ -56,7 +58,7 @@ export GLIBC_TUNABLES ?= glibc.malloc.hugetlb=1:glibc.malloc.mmap_threshold=3355
 # scripts/step.sh also says, when it ends, how long it took (and logs it to build/step-times.log).
 say = @printf '\n== make: %s (about %s)\n' $(1) $(2)
 
-.PHONY: all steps test test-fast deps build results paper document crosscheck hard-cases continuum rim-series liftoff bench check-results clean help FORCE
+.PHONY: all steps test test-fast deps build results paper document crosscheck hard-cases continuum rim-series liftoff kink bench check-results clean help FORCE
 
 # `make all` runs the steps that share no output side by side, one per core, then the benchmarks
 # alone (so that no other step disturbs their timings), then the document, and ends with a table of
@@ -68,7 +70,7 @@ all: build ## build, then every result, figure, benchmark and the document (the 
 	$(MAKE) --no-print-directory paper
 	@scripts/step_report.sh $$(( $$(date +%s) - $(ALL_START) ))
 
-steps: results rim-series continuum liftoff crosscheck hard-cases
+steps: results rim-series continuum liftoff kink crosscheck hard-cases
 
 help: ## list the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 12
@@ -129,6 +131,12 @@ liftoff: $(LIFTOFF) ## scenes where the plate lifts off part of the rim: three k
 $(LIFTOFF) &: $(BUILD)/liftoff reference/square_with_circle.geo reference/contact_hct.edp | deps
 	scripts/step.sh "results/liftoff*: scenes where the plate lifts off part of the rim, and FreeFEM on fitted meshes" "2 min" $(BUILD)/liftoff --out results --work $(BUILD)/liftoff-work
 
+kink: $(KINK) ## the plain space against the one that carries the kink at the rim (D31), three scenes against the series (about 40 s)
+
+$(KINK_DATA) &: $(BUILD)/kink_study $(PAPER_NUMBERS)
+	scripts/step.sh "results/kink*: the plain space and the kink carried (D31) on three scenes, against the series" "40 s" $(BUILD)/kink_study --out results
+
+results/kink.svg results/kink.png: results/kink.csv
 results/continuum.svg results/continuum.png: results/continuum_error.csv
 results/continuum_q.svg results/continuum_q.png: results/continuum_q.csv
 
@@ -191,7 +199,7 @@ results/versions.csv: scripts/deps.sh | deps
 	@test $$(grep -c . $@.tmp) -eq $$(( $(words $(VERSIONED)) + 1 )) || { echo "versions.csv: dpkg-query did not find every package of VERSIONED" >&2; rm -f $@.tmp; exit 1; }
 	mv $@.tmp $@
 
-$(NUMBERS) &: $(BUILD)/prose_numbers $(RESULTS) $(RIM_SERIES) $(CONTINUUM_DATA) results/liftoff.csv $(CROSSCHECK) results/crosscheck_penalty_limits.csv $(HARD_CASES) $(BENCH) results/versions.csv \
+$(NUMBERS) &: $(BUILD)/prose_numbers $(RESULTS) $(RIM_SERIES) $(CONTINUUM_DATA) results/liftoff.csv results/kink.csv $(CROSSCHECK) results/crosscheck_penalty_limits.csv $(HARD_CASES) $(BENCH) results/versions.csv \
                $(wildcard results/rebuild_times.csv) reference/plate_constants.csv
 	$(BUILD)/prose_numbers --out results
 
@@ -211,7 +219,7 @@ results/paper.html: $(PAPER_INPUTS) | deps
 # differ on every run), rebuilt into a scratch folder and compared with the committed ones number by
 # number (build/compare_tables: one unit in the last printed digit), never byte for byte. `make test`
 # runs the drivers that take seconds the same way.
-CHECKED_DRIVERS := rim_series table contraction fig1 fig2 continuum liftoff crosscheck crosscheck_penalty
+CHECKED_DRIVERS := rim_series table contraction fig1 fig2 continuum liftoff kink_study crosscheck crosscheck_penalty
 untimed = $(notdir $(filter-out %_timings.csv,$(1)))
 CHECKED_table              := $(call untimed,$(TABLES))
 CHECKED_contraction        := $(call untimed,$(CONTRACTION))
@@ -222,6 +230,7 @@ CHECKED_crosscheck         := $(call untimed,$(CROSSCHECK))
 CHECKED_crosscheck_penalty := $(call untimed,$(CROSSCHECK_PENALTY))
 CHECKED_rim_series         := $(call untimed,$(RIM_SERIES))
 CHECKED_liftoff            := $(call untimed,$(LIFTOFF))
+CHECKED_kink_study         := $(call untimed,$(KINK_DATA))
 CHECK_DIR := $(BUILD)/check-results
 comma := ,
 empty :=

@@ -349,6 +349,29 @@ void liftoff_numbers(Numbers& num, const std::string& results) {
   num.put("liftoff.default_dip_finest_max", fmt("%.1e", finest.hi), src + " default rows on each scene's finest grid: max dip / R");
 }
 
+// What carrying the kink buys (results/kink.csv): every row's errors and, from the grid before, its
+// observed orders, keyed kink.<scene>_<space>_<column>_<n>; scene paper, off_centre or oblong, space
+// plain or kink.
+void kink_numbers(Numbers& num, const std::string& results) {
+  const CsvTable t = read_csv_table(results + "/kink.csv");
+  const std::string src = "results/kink.csv";
+  std::map<std::string, std::size_t> before;  // scene and space -> the row of the grid before
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    std::string scene = t.text(r, "scene");
+    std::replace(scene.begin(), scene.end(), '-', '_');
+    const std::string key = "kink." + scene + "_" + t.text(r, "space") + "_", n = t.text(r, "n");
+    const std::string where = src + " " + t.text(r, "scene") + " " + t.text(r, "space") + " n = " + n + ": ";
+    for (const std::string c : {"err_max_w", "err_total_force", "err_line_pointwise"}) {
+      num.put(key + c + "_" + n, fmt("%.1e", t.number(r, c)), where + c);
+      if (const auto b = before.find(key); b != before.end())
+        num.put(key + "order_" + c.substr(4) + "_" + n, fmt("%.1f", std::log2(t.number(b->second, c) / t.number(r, c))),
+                where + "log2 of the ratio of " + c + " to the grid before");
+    }
+    num.put(key + "unknowns_" + n, t.text(r, "unknowns"), where + "unknowns");
+    before[key] = r;
+  }
+}
+
 // Package versions of the machine that built the document (results/versions.csv, from dpkg).
 void version_numbers(Numbers& num, const std::string& results) {
   const CsvTable t = read_csv_table(results + "/versions.csv");
@@ -385,6 +408,8 @@ void model_numbers(Numbers& num) {
   num.put("model.correction_block", count(kCorrectionBlock), "src/fixed_set.hpp kCorrectionBlock");
   num.put("model.max_correction", count(ExactOptions{}.max_correction), "src/active_set.hpp ExactOptions::max_correction");
   num.put("model.gram_block", count(kGramBlock), "src/dual_active_set.hpp kGramBlock");
+  num.put("model.kink_flat_cells", fmt("%g", kKinkFlatCells), "src/kink_enrichment.hpp kKinkFlatCells");
+  num.put("model.kink_zero_cells", fmt("%g", kKinkZeroCells), "src/kink_enrichment.hpp kKinkZeroCells");
 }
 
 // One run of the linear scheme (results/linear_history.csv): after its first step, how the true
@@ -433,6 +458,7 @@ int main(int argc, char** argv) {
     continuum_numbers(fixed, results);
     rim_series_numbers(fixed, results);
     liftoff_numbers(fixed, results);
+    kink_numbers(fixed, results);
     linear_history_numbers(fixed, results);
     published_numbers(fixed, reference);
     model_numbers(fixed);

@@ -1,0 +1,175 @@
+// kink_study: what the functions that carry the kink at the rim (D31) buy. On the paper's scene,
+// an off-centre cylinder and a 1.25 x 1 plate with its cylinder off both centre lines (three scenes
+// the rim-contact series solves), the exact solver with the default rows in the plain space and
+// with the kink carried, on n = 16 ... 256 (20 ... 320 on the 1.25 plate): the distance of max w
+// (the field's peak), the total force and the line load point by point from the series, with the
+// observed orders. Writes results/kink.{md,csv}. Run by `make kink`; `kink_study --help` lists the
+// options.
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "active_set.hpp"
+#include "atomic_file.hpp"
+#include "contact.hpp"
+#include "exit_codes.hpp"
+#include "extrema.hpp"
+#include "format.hpp"
+#include "line_force.hpp"
+#include "published.hpp"
+#include "rim_contact.hpp"
+#include "stopwatch.hpp"
+
+using namespace plate;
+
+namespace {
+
+struct SceneCase {
+  std::string name, key;  // the report's words, and the CSV's
+  Scene scene;
+  int coarsest;  // the grids are coarsest, 2 coarsest, ... (ly a whole number of cells)
+};
+
+struct Row {
+  std::string scene, space;
+  int n = 0, unknowns = 0;
+  bool certified = false;
+  double h = 0, seconds = 0, max_w = 0, force = 0, err_w = 0, err_f = 0, err_line = 0;
+};
+
+Row solve_one(const SceneCase& c, const RimAnswer& series, bool kink, int n) {
+  SamplingSpec spec{SamplingKind::Edge};
+  if (kink) spec.enrich.kind = EnrichSpec::Kind::Ring;
+  const auto t0 = Clock::now();
+  const SceneSolution x = solve_exact_scene(c.scene, n, spec, ExactOptions{});
+  Row r;
+  r.seconds = seconds_since(t0);
+  r.scene = c.key, r.space = kink ? "kink" : "plain", r.n = n, r.h = c.scene.lx / n, r.unknowns = x.solved.unknowns();
+  r.certified = x.result.converged;
+  const Problem& p = x.whole();
+  r.max_w = extremum_of_w(p, x.result.w, +1).value;
+  r.force = total_contact_force(p, x.result.lambda);
+  const RimSeries& s = series.finest;
+  r.err_w = std::abs(r.max_w - s.max_w().w) / s.max_w().w;
+  r.err_f = std::abs(r.force - s.total_force()) / s.total_force();
+  r.err_line = max_distance(line_force(p, x.result.lambda), [&](double t) { return s.q(t); }) / s.q_cos.at(0);
+  if (!r.certified) std::cerr << "kink_study: " << c.key << " " << r.space << " n = " << n << ": " << x.result.message << "\n";
+  return r;
+}
+
+std::string order(double coarse, double fine) { return coarse > 0 && fine > 0 ? fmt("%.2f", std::log2(coarse / fine)) : ""; }
+
+// The least observed order of err over the grids from n = lo to hi (both ends in), and whether every
+// one of them is at least `target`.
+struct Orders {
+  double least = INFINITY;
+  int count = 0;
+};
+Orders orders_between(const std::vector<Row>& rows, const std::string& scene, const std::string& space,
+                      double Row::*err, int lo, int hi) {
+  Orders o;
+  const Row* before = nullptr;
+  for (const Row& r : rows) {
+    if (r.scene != scene || r.space != space) continue;
+    if (before && before->n >= lo && r.n <= hi) o.least = std::min(o.least, std::log2(before->*err / r.*err)), ++o.count;
+    before = &r;
+  }
+  return o;
+}
+
+std::string csv(const std::vector<Row>& rows) {
+  std::ostringstream o;
+  o << "# kink_study: exact solves with the default rows, in the plain space and with the kink carried (D31); errors\n"
+       "# relative to the rim-contact series: max w (the field's peak), the total force, and the line load's largest\n"
+       "# distance from the series' q over 720 angles, over the mean load. Made by build/kink_study\n"
+       "scene,space,n,h,unknowns,certified,max_w,err_max_w,total_force,err_total_force,err_line_pointwise\n";
+  for (const Row& r : rows)
+    o << r.scene << "," << r.space << "," << r.n << "," << fmt("%.10g", r.h) << "," << r.unknowns << ","
+      << (r.certified ? 1 : 0) << "," << fmt("%.12g", r.max_w) << "," << fmt("%.2e", r.err_w) << "," << fmt("%.11g", r.force)
+      << "," << fmt("%.2e", r.err_f) << "," << fmt("%.2e", r.err_line) << "\n";
+  return o.str();
+}
+
+std::string markdown(const std::vector<Row>& rows, const std::vector<SceneCase>& cases) {
+  std::ostringstream o;
+  o << "Made by `make kink` (`build/kink_study`); the numbers are in `kink.csv`. Each run is the exact solver with the "
+       "default rows, certified to 1e-10, in the plain Bogner-Fox-Schmit space (`--enrich none`) and with the functions "
+       "that carry the kink at the rim (D31, the default), measured against the rim-contact series. Run times are in "
+       "`time_to_accuracy.md`.\n\n";
+  for (const SceneCase& c : cases) {
+    o << "| space | n | unknowns | max w | order | total force | order | line load, pointwise | order |\n"
+         "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const char* space : {"plain", "kink"}) {
+      const Row* before = nullptr;
+      for (const Row& r : rows) {
+        if (r.scene != c.key || r.space != space) continue;
+        o << "| " << (r.space == "kink" ? "kink carried" : "plain") << " | " << r.n << (r.certified ? "" : " (**not certified**)")
+          << " | " << r.unknowns << " | " << fmt("%.1e", r.err_w) << " | " << (before ? order(before->err_w, r.err_w) : "")
+          << " | " << fmt("%.1e", r.err_f) << " | " << (before ? order(before->err_f, r.err_f) : "") << " | "
+          << fmt("%.1e", r.err_line) << " | " << (before ? order(before->err_line, r.err_line) : "") << " |\n";
+        before = &r;
+      }
+    }
+    o << "\nTable: " << c.name << ": each grid's relative distance from the series, and the order from the grid before.\n\n";
+  }
+  o << "**Targets**, measured in this run:\n\n";
+  for (const SceneCase& c : cases) {
+    const int lo = 2 * c.coarsest, hi = 16 * c.coarsest;
+    const Orders w = orders_between(rows, c.key, "kink", &Row::err_w, lo, hi), f = orders_between(rows, c.key, "kink", &Row::err_f, lo, hi);
+    const bool met = w.count >= 3 && f.count >= 3 && w.least >= 3.8 && f.least >= 3.8;
+    o << "- " << c.name << ": observed order at least 3.8 in max w and the force on every grid from n = " << lo
+      << " to " << hi << ": " << (met ? "**met**" : "**not met**") << " (least " << fmt("%.2f", w.least) << " and "
+      << fmt("%.2f", f.least) << ").\n";
+  }
+  for (const Row& r : rows)
+    if (r.scene == cases.front().key && r.space == "kink" && r.n == 128)
+      o << "- " << cases.front().name << ": the line load point by point within 1e-4 of the mean load at n = 128: "
+        << (r.err_line <= 1e-4 ? "**met**" : "**not met**") << " (" << fmt("%.1e", r.err_line) << ").\n";
+  return o.str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  clean_up_on_interrupt("kink_study");
+  CLI::App app{"kink_study: the plain space against the one that carries the kink at the rim (D31), on three scenes\n"
+               "the rim-contact series solves, n = 16 ... finest."};
+  std::string out = "results";
+  int finest = 256;
+  app.add_option("--out", out, "folder for the results")->capture_default_str();
+  app.add_option("--finest", finest, "cells on the finest grid of the unit square (the 1.25 plate gets 5/4 of it)")
+      ->check(CLI::IsMember({64, 128, 256, 512}))
+      ->capture_default_str();
+  app.footer(kExitStatusHelp);
+  if (const int status = parse_options(app, argc, argv, "kink_study"); status >= 0) return status;
+  try {
+    const std::vector<SceneCase> cases = {
+        {"The paper's scene", "paper", paper_scene(), 16},
+        {"The cylinder at (0.45, 0.5)", "off-centre", cylinder_scene(1, 1, Cylinder{0.45, 0.5, 0.25, 0.0625}), 16},
+        {"A 1.25 x 1 plate with the cylinder at (0.6, 0.45)", "oblong", cylinder_scene(1.25, 1, Cylinder{0.6, 0.45, 0.25, 0.0625}), 20}};
+    std::vector<Row> rows;
+    for (const SceneCase& c : cases) {
+      const RimAnswer series = rim_answer(c.scene);
+      if (!series.premise.holds || !series.settled)
+        throw std::runtime_error(c.name + ": the rim-contact series gives no answer to measure against");
+      for (bool kink : {false, true})
+        for (int n = c.coarsest; n <= finest * c.coarsest / 16; n *= 2) {
+          std::cerr << "kink_study: " << c.key << (kink ? " kink" : " plain") << ", n = " << n << "\n";
+          rows.push_back(solve_one(c, series, kink, n));
+        }
+    }
+    write_file_atomically(out + "/kink.csv", csv(rows));
+    write_file_atomically(out + "/kink.md", markdown(rows, cases));
+    for (const Row& r : rows)
+      if (!r.certified) return kNotConverged;
+    return kSuccess;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "kink_study: bad input: " << e.what() << "\n";
+    return kBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "kink_study: error: " << e.what() << "\n";
+    return kFailure;
+  }
+}
