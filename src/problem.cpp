@@ -95,16 +95,19 @@ static SpMat sampling_mass(const Problem& p) {
 }
 
 // S with a (zero) column for every unknown of the space, the enrichment's included.
-// With the enrichment, the functions psi_k - I_h psi_k are -I_h psi_k on the rim: their columns are -S P.
+// With the enrichment (D31) every row gets a column per function, psi_k read at its sample. On the
+// rim psi_k = -I_h F_k, so an edge row's columns are -S P; at a node psi_k vanishes, so an interior
+// row's are zero. Made anew from the grid's columns each time rows are made or added.
 static void fit_columns(Problem& p) {
   const int N = p.grid.unknowns();
-  if (p.sampling.S.cols() == p.unknowns() || !p.kink) return;
+  if (!p.kink) return;
   const RowSpMat SP = p.sampling.S.leftCols(N) * p.kink_interp;
   std::vector<Eigen::Triplet<double>> t;
   for (Eigen::Index r = 0; r < p.sampling.S.outerSize(); ++r) {
     for (RowSpMat::InnerIterator it(p.sampling.S, r); it; ++it)
       if (it.col() < N) t.emplace_back(r, it.col(), it.value());
-    for (RowSpMat::InnerIterator it(SP, r); it; ++it) t.emplace_back(r, N + it.col(), -it.value());
+    if (r >= p.sampling.edge_begin)
+      for (RowSpMat::InnerIterator it(SP, r); it; ++it) t.emplace_back(r, N + it.col(), -it.value());
   }
   RowSpMat S(p.sampling.S.rows(), p.unknowns());
   S.setFromTriplets(t.begin(), t.end());
@@ -152,8 +155,10 @@ void append_rim_points(Problem& p, const std::vector<double>& angles) {
   p.M = sampling_mass(p);
 }
 
+// Edge sampling only: its interior rows are nodal values, where psi_k vanishes; a Gauss row inside
+// a square the rim cuts would need psi_k at its point.
 bool kink_on(const Grid& g, const Scene& s, const SamplingSpec& spec) {
-  return spec.enrich.on() && has_edge(spec.kind) && kink_fits(g, s.edge);
+  return spec.enrich.on() && spec.kind == SamplingKind::Edge && kink_fits(g, s.edge);
 }
 
 // @region kink-rows

@@ -50,7 +50,8 @@ Problem make_problem(const Scene& s, const Grid& g, const SamplingSpec& spec);
 // a solve on part of the plate read on the whole (mirror.hpp). Validates as make_problem does.
 Problem make_samples(const Scene& s, const Grid& g, const SamplingSpec& spec);
 
-// Whether the space on grid g is widened by (D31): asked for, edge sampling, and a circle it fits.
+// Whether the space on grid g is widened by (D31): asked for, edge sampling (not edge-gauss), and a
+// circle it fits.
 bool kink_on(const Grid& g, const Scene& s, const SamplingSpec& spec);
 // The edge rows grid g gets: spec.rows, with splines two cells apart where (D31) is on and no spacing
 // was asked for.

@@ -184,3 +184,27 @@ TEST(KinkEnrichment, UnfoldedFieldIsThePartsField) {
   }
   EXPECT_GT(share, 1e-3);
 }
+
+// Every row of S reads the field of the whole space: a point row on the rim the enriched field at
+// its point, a nodal row the nodal value, also after rows were laid out for the contact and added
+// where the plate dipped (a lift-off scene, where both happen).
+TEST(KinkEnrichment, RowsReadTheEnrichedField) {
+  SamplingSpec spec{SamplingKind::Edge};
+  spec.enrich.kind = EnrichSpec::Kind::Ring;
+  const Scene s = cylinder_scene(1.5, 1, Cylinder{0.6, 0.45, 0.25, 0.0625});
+  const SceneSolution x = solve_exact_scene(s, 96, spec, ExactOptions{});
+  ASSERT_TRUE(x.result.converged) << x.result.message;
+  const Problem& p = x.solved;
+  ASSERT_TRUE(p.kink.has_value());
+  ASSERT_TRUE(p.sampling.rim_laid_out());
+  const VectorXd Sw = p.sampling.S * x.part_w;
+  const PlateField field(p, x.part_w);
+  int points = 0;
+  for (int q = 0; q < p.sampling.size(); ++q) {
+    const int k = q - p.sampling.edge_begin;
+    if (k >= 0 && !p.sampling.rim_rows[k].point()) continue;  // a spline average: no one point
+    EXPECT_NEAR(Sw[q], field.at(p.sampling.x[q], p.sampling.y[q]).w, 1e-13) << q;
+    points += k >= 0;
+  }
+  EXPECT_GT(points, 0);
+}

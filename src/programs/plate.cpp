@@ -343,7 +343,7 @@ Run check(const Options& o) {
     refuse_group(o.exact, "the penalty schemes (it applies to --scheme exact only)");
   r.use_mirrors = o.symmetry == "auto";
   if (r.exact && o.enrich != "none") {
-    const bool circle = has_edge(r.spec.kind) && r.scene.edge.kind == EdgeCurve::Kind::Circle;
+    const bool circle = r.spec.kind == SamplingKind::Edge && r.scene.edge.kind == EdgeCurve::Kind::Circle;
     if (o.enrich == "ring" && !circle)
       throw std::invalid_argument("--enrich ring needs edge sampling of a circle (--sampling edge, the cylinder or --edge circle:...)");
     if (o.enrich == "ring" && !kink_fits(r.g, r.scene.edge))
