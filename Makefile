@@ -31,6 +31,7 @@ CONTINUUM_DATA := results/continuum.md results/continuum.csv results/continuum_e
 RIM_SERIES := results/rim_series.md results/rim_series.csv results/rim_answer.csv results/uniform_load.csv
 LIFTOFF   := results/liftoff.md results/liftoff.csv results/liftoff_timings.csv
 KINK_DATA := results/kink.md results/kink.csv
+OWN_SCENES := results/own_scenes.md
 KINK      := $(KINK_DATA) results/kink.svg results/kink.png
 CONTINUUM := $(CONTINUUM_DATA) results/continuum.svg results/continuum.png results/continuum_q.svg results/continuum_q.png
 BENCH     := results/speed_vs_error.csv results/speed_vs_error.md
@@ -38,7 +39,7 @@ TTA       := results/time_to_accuracy.csv results/time_to_accuracy.md
 BENCH_ALL := $(BENCH) results/speed_vs_error.svg results/speed_vs_error.png results/micro_benchmarks.md \
              $(TTA) results/time_to_accuracy.svg results/time_to_accuracy.png
 PAPER_INPUTS := paper/paper.md paper/style.css $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp src/programs/*.cpp src/programs/support/*.cpp src/programs/support/*.hpp) \
-                $(RESULTS) $(RIM_SERIES) $(CONTINUUM) $(LIFTOFF) $(KINK) $(CROSSCHECK) $(RIM_FIGURE) $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) $(TABLE_FIGURE) $(HARD_CASES) $(BENCH_ALL) $(NUMBERS)
+                $(RESULTS) $(RIM_SERIES) $(CONTINUUM) $(LIFTOFF) $(KINK) $(OWN_SCENES) $(CROSSCHECK) $(RIM_FIGURE) $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) $(TABLE_FIGURE) $(HARD_CASES) $(BENCH_ALL) $(NUMBERS)
 # The packages whose versions the document's reference list gives.
 VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread libmuparser-dev libcli11-dev freefem++ gmsh \
              libpetsc-real-dev libmumps-dev pandoc gnuplot-nox g++ cmake libgtest-dev libbenchmark-dev
@@ -58,7 +59,7 @@ export GLIBC_TUNABLES ?= glibc.malloc.hugetlb=1:glibc.malloc.mmap_threshold=3355
 # scripts/step.sh also says, when it ends, how long it took (and logs it to build/step-times.log).
 say = @printf '\n== make: %s (about %s)\n' $(1) $(2)
 
-.PHONY: all steps test test-fast deps build results paper document crosscheck hard-cases continuum rim-series liftoff kink bench check-results clean help FORCE
+.PHONY: all steps test test-fast deps build results paper document crosscheck hard-cases continuum rim-series liftoff kink own-scenes bench check-results clean help FORCE
 
 # `make all` runs the steps that share no output side by side, one per core, then the benchmarks
 # alone (so that no other step disturbs their timings), then the document, and ends with a table of
@@ -70,7 +71,7 @@ all: build ## build, then every result, figure, benchmark and the document (the 
 	$(MAKE) --no-print-directory paper
 	@scripts/step_report.sh $$(( $$(date +%s) - $(ALL_START) ))
 
-steps: results rim-series continuum liftoff kink crosscheck hard-cases
+steps: results rim-series continuum liftoff kink own-scenes crosscheck hard-cases
 
 help: ## list the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 12
@@ -137,6 +138,11 @@ $(KINK_DATA) &: $(BUILD)/kink_study $(PAPER_NUMBERS)
 	scripts/step.sh "results/kink*: the plain space and the kink carried (D31) on three scenes, against the series" "40 s" $(BUILD)/kink_study --out results
 
 results/kink.svg results/kink.png: results/kink.csv
+
+own-scenes: $(OWN_SCENES) ## the document's three worked plate commands on scenes of one's own, and what each prints (5 s)
+
+$(OWN_SCENES): $(BUILD)/plate scripts/own_scenes.sh
+	scripts/step.sh "results/own_scenes.md: three worked plate commands on scenes of one's own" "5 s" scripts/own_scenes.sh $(BUILD)/plate $@
 results/continuum.svg results/continuum.png: results/continuum_error.csv
 results/continuum_q.svg results/continuum_q.png: results/continuum_q.csv
 
