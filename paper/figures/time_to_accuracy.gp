@@ -17,15 +17,16 @@ set grid
 set tmargin at screen 0.93
 set bmargin at screen 0.36
 unset key
-# Eleven lines: the default list of colours has eight.
+# Twelve lines: the default list of colours has eight.
 set linetype 9 lc rgb '#8c564b' pt 5
 set linetype 10 lc rgb '#17becf' pt 5
 set linetype 11 lc rgb '#7f7f7f' pt 5
+set linetype 12 lc rgb '#bcbd22' pt 5
 data = 'results/time_to_accuracy.csv'
 stats data using 2 nooutput
 blocks = STATS_blocks
 # The configurations of src/programs/time_to_accuracy.cpp, in its order (the CSV has one block each).
-array names[11] = ["exact edge splines (default)", "exact edge points", "exact edge splines whole plate", "exact nodes", "exact Gauss", "(3a) edge", "(3a) Gauss (paper)", "(5a) Gauss (paper)", "SNESVI rsls nodes", "SNESVI ssls nodes", "FreeFEM HCT vertices"]
+array names[12] = ["exact edge kink carried (default)", "exact edge plain", "exact edge points", "exact edge whole plate", "exact nodes", "exact Gauss", "(3a) edge", "(3a) Gauss (paper)", "(5a) Gauss (paper)", "SNESVI rsls nodes", "SNESVI ssls nodes", "FreeFEM HCT vertices"]
 ok(col) = (column(3) == 0 && column(col) > 0) ? column(col) : NaN
 bad(col) = (column(3) != 0 && column(col) > 0) ? column(col) : NaN
 set multiplot
