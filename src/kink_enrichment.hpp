@@ -8,8 +8,9 @@
 // 0 from 2.5 cells on. F_k is C^2 with its third radial derivative jumping by 6 B_k at the rim, so
 // psi_k is in H^2 (the space stays conforming) and carries the jump. Subtracting I_h F_k makes
 // psi_k vanish with its slopes and twist at every node: the grid's unknowns stay the nodal values of
-// the whole field, and psi_k is small wherever F_k is smooth, so the enlarged system is as well
-// conditioned as K (the stable GFEM of Babuska and Banerjee, CMAME 201-204, 2012). The cut-off keeps
+// the whole field, and psi_k is small wherever F_k is smooth, so the enlarged system stays about as
+// well conditioned as K (the stable GFEM of Babuska and Banerjee, CMAME 201-204, 2012; measured in
+// results/kink.md). The cut-off keeps
 // each psi_k on a few cells about the rim, where the part that is not small lives. A part of the
 // plate (mirror.hpp) gets the sums of each spline with its mirror images, so every function is
 // symmetric as the solution is.

@@ -13,6 +13,7 @@
 
 #include "active_set.hpp"
 #include "atomic_file.hpp"
+#include "cholesky.hpp"
 #include "contact.hpp"
 #include "exit_codes.hpp"
 #include "extrema.hpp"
@@ -36,8 +37,45 @@ struct Row {
   std::string scene, space;
   int n = 0, unknowns = 0;
   bool certified = false;
+  double cond = NAN;  // estimated 2-norm condition number of K (grids to kCondCells)
   double h = 0, seconds = 0, max_w = 0, force = 0, err_w = 0, err_f = 0, err_line = 0;
 };
+
+// Condition numbers are estimated on the grids up to this many cells along x.
+constexpr int kCondCells = 128;
+
+// The 2-norm condition number of the SPD matrix K scaled to a unit diagonal, D^-1/2 K D^-1/2: what
+// limits a Cholesky solve, which no diagonal scaling changes (van der Sluis), where the unscaled
+// number mostly measures how unlike in size the unknowns are (a value, slopes, a twist, and the
+// kink functions' coefficients). The largest eigenvalue by power iteration, the smallest by inverse
+// iteration with the Cholesky factor, each until its Rayleigh quotient moves by less than 1e-4 of
+// itself in a step: an estimate, which a slowly converging power iteration leaves low.
+double condition_number(const SpMat& unscaled) {
+  const int n = static_cast<int>(unscaled.rows());
+  const VectorXd d = unscaled.diagonal().cwiseSqrt().cwiseInverse();
+  const SpMat K = d.asDiagonal() * unscaled * d.asDiagonal();
+  VectorXd v = VectorXd::Ones(n).normalized();
+  double top = 0, bottom = 0;
+  for (int it = 0; it < 300; ++it) {
+    const VectorXd Kv = K * v;
+    const double q = v.dot(Kv);
+    v = Kv.normalized();
+    if (it > 20 && std::abs(q - top) <= 1e-4 * q) break;
+    top = q;
+  }
+  Cholesky chol;
+  chol.analyze(K);
+  chol.factorize(K);
+  v = VectorXd::Ones(n).normalized();
+  for (int it = 0; it < 300; ++it) {
+    const VectorXd u = chol.solve(v);
+    const double q = v.dot(u);  // Rayleigh quotient of K^-1
+    v = u.normalized();
+    if (it > 20 && std::abs(q - bottom) <= 1e-4 * q) break;
+    bottom = q;
+  }
+  return top * bottom;
+}
 
 Row solve_one(const SceneCase& c, const RimAnswer& series, bool kink, int n) {
   SamplingSpec spec{SamplingKind::Edge};
@@ -55,6 +93,7 @@ Row solve_one(const SceneCase& c, const RimAnswer& series, bool kink, int n) {
   r.err_w = std::abs(r.max_w - s.max_w().w) / s.max_w().w;
   r.err_f = std::abs(r.force - s.total_force()) / s.total_force();
   r.err_line = max_distance(line_force(p, x.result.lambda), [&](double t) { return s.q(t); }) / s.q_cos.at(0);
+  if (n <= kCondCells * c.coarsest / 16) r.cond = condition_number(x.solved.K);
   if (!r.certified) std::cerr << "kink_study: " << c.key << " " << r.space << " n = " << n << ": " << x.result.message << "\n";
   return r;
 }
@@ -84,11 +123,13 @@ std::string csv(const std::vector<Row>& rows) {
   o << "# kink_study: exact solves with the default rows, in the plain space and with the kink carried (D31); errors\n"
        "# relative to the rim-contact series: max w (the field's peak), the total force, and the line load's largest\n"
        "# distance from the series' q over 720 angles, over the mean load. Made by build/kink_study\n"
-       "scene,space,n,h,unknowns,certified,max_w,err_max_w,total_force,err_total_force,err_line_pointwise\n";
+       "# cond: the 2-norm condition number of K scaled to a unit diagonal, estimated by power and inverse iteration,\n"
+       "# on the grids up to n = 128 (160 on the 1.25 plate)\n"
+       "scene,space,n,h,unknowns,certified,max_w,err_max_w,total_force,err_total_force,err_line_pointwise,cond\n";
   for (const Row& r : rows)
     o << r.scene << "," << r.space << "," << r.n << "," << fmt("%.10g", r.h) << "," << r.unknowns << ","
       << (r.certified ? 1 : 0) << "," << fmt("%.12g", r.max_w) << "," << fmt("%.2e", r.err_w) << "," << fmt("%.11g", r.force)
-      << "," << fmt("%.2e", r.err_f) << "," << fmt("%.2e", r.err_line) << "\n";
+      << "," << fmt("%.2e", r.err_f) << "," << fmt("%.2e", r.err_line) << "," << (std::isfinite(r.cond) ? fmt("%.2e", r.cond) : "") << "\n";
   return o.str();
 }
 
@@ -114,6 +155,17 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<SceneCase>&
     }
     o << "\nTable: " << c.name << ": each grid's relative distance from the series, and the order from the grid before.\n\n";
   }
+  o << "| scene | n | cond(K), plain | cond(K), kink carried | ratio |\n|---|---:|---:|---:|---:|\n";
+  for (const SceneCase& c : cases)
+    for (const Row& p : rows) {
+      if (p.scene != c.key || p.space != "plain" || !std::isfinite(p.cond)) continue;
+      for (const Row& k : rows)
+        if (k.scene == c.key && k.space == "kink" && k.n == p.n && std::isfinite(k.cond))
+          o << "| " << c.key << " | " << p.n << " | " << fmt("%.1e", p.cond) << " | " << fmt("%.1e", k.cond) << " | "
+            << fmt("%.2f", k.cond / p.cond) << " |\n";
+    }
+  o << "\nTable: The 2-norm condition number of the stiffness of the part of the plate solved, scaled to a unit "
+       "diagonal (what limits a Cholesky solve), in each space, estimated by power and inverse iteration.\n\n";
   o << "**Targets**, measured in this run:\n\n";
   for (const SceneCase& c : cases) {
     const int lo = 2 * c.coarsest, hi = 16 * c.coarsest;

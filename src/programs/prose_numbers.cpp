@@ -368,6 +368,7 @@ void kink_numbers(Numbers& num, const std::string& results) {
                 where + "log2 of the ratio of " + c + " to the grid before");
     }
     num.put(key + "unknowns_" + n, t.text(r, "unknowns"), where + "unknowns");
+    if (!t.text(r, "cond").empty()) num.put(key + "cond_" + n, fmt("%.1e", t.number(r, "cond")), where + "cond");
     before[key] = r;
   }
 }
