@@ -336,17 +336,23 @@ void liftoff_numbers(Numbers& num, const std::string& results) {
   const CsvTable t = read_csv_table(results + "/liftoff.csv");
   const double R = 0.0625;  // the cylinder's height on every lift-off scene (liftoff.cpp)
   const std::string src = "results/liftoff.csv";
-  Range splines, finest;
+  Range splines;
   for (std::size_t r : t.where("rows", "splines")) splines.add(t.number(r, "dip") / R);
-  std::map<std::string, std::pair<double, double>> last;  // scene -> (h, dip) of its finest default row
-  for (std::size_t r : t.where("rows", "default")) {
-    auto& l = last[t.text(r, "scene")];
-    if (l.first == 0 || t.number(r, "h") < l.first) l = {t.number(r, "h"), t.number(r, "dip") / R};
-  }
-  for (const auto& [scene, l] : last) finest.add(l.second);
+  // The largest dip over the scenes, each on its finest grid, of one kind of rows.
+  const auto finest_dip = [&](const char* rows) {
+    std::map<std::string, std::pair<double, double>> last;  // scene -> (h, dip) of its finest row
+    for (std::size_t r : t.where("rows", rows)) {
+      auto& l = last[t.text(r, "scene")];
+      if (l.first == 0 || t.number(r, "h") < l.first) l = {t.number(r, "h"), t.number(r, "dip") / R};
+    }
+    Range finest;
+    for (const auto& [scene, l] : last) finest.add(l.second);
+    return finest.hi;
+  };
   const auto percent = [](double v) { return fmt("%.2g", 100 * v) + " %"; };
   num.put("liftoff.spline_dip_max", percent(splines.hi), src + " splines rows: max dip / R");
-  num.put("liftoff.default_dip_finest_max", fmt("%.1e", finest.hi), src + " default rows on each scene's finest grid: max dip / R");
+  num.put("liftoff.default_dip_finest_max", fmt("%.1e", finest_dip("default")), src + " default rows on each scene's finest grid: max dip / R");
+  num.put("liftoff.kink_dip_finest_max", fmt("%.1e", finest_dip("kink")), src + " kink rows on each scene's finest grid: max dip / R");
 }
 
 // What carrying the kink buys (results/kink.csv): every row's errors and, from the grid before, its
