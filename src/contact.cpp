@@ -49,6 +49,12 @@ PointValues PlateField::enrichment_at(double x, double y) const {
   return {k.w, k.wx, k.wy, k.wxx, k.wxy, k.wyy};
 }
 
+PointValues PlateField::enrichment_in(int ex, int ey, double t, double s, double x, double y) const {
+  if (!p_.kink) return {0, 0, 0, 0, 0, 0};
+  const KinkValue k = kink_field_in(p_.grid, *p_.kink, c_, Pc_, ex, ey, t, s, 0, x, y);
+  return {k.w, k.wx, k.wy, k.wxx, k.wxy, k.wyy};
+}
+
 PointValues PlateField::at(double x, double y) const {
   const PointValues v = evaluate(p_.grid, w_, x, y);
   return p_.kink ? plus(v, enrichment_at(x, y)) : v;
@@ -126,14 +132,12 @@ NodalFields nodal_fields(const Problem& p, const VectorXd& w, const VectorXd& xi
       int count = 0;
       for (int ey = std::max(0, j - 1); ey <= std::min(g.ny - 1, j); ++ey)
         for (int ex = std::max(0, i - 1); ex <= std::min(g.nx - 1, i); ++ex) {
-          const PointValues v = evaluate_in(g, w, ex, ey, i - ex, j - ey);
+          // With (D31), each element's own share: its curvatures jump across the sides as the grid's do.
+          const PointValues v = plus(evaluate_in(g, w, ex, ey, i - ex, j - ey),
+                                     field.enrichment_in(ex, ey, i - ex, j - ey, g.x(i), g.y(j)));
           avg = {avg.w + v.w, avg.wx + v.wx, avg.wy + v.wy, avg.wxx + v.wxx, avg.wxy + v.wxy, avg.wyy + v.wyy};
           ++count;
         }
-      if (p.kink && g.is_interior(i, j)) {  // (D31) vanishes at the nodes with its slopes; one element's curvatures
-        const PointValues e = field.enrichment_at(g.x(i), g.y(j));
-        avg = plus(avg, PointValues{0, 0, 0, e.wxx * count, e.wxy * count, e.wyy * count});
-      }
       const double k = 1.0 / count;
       const double x = g.x(i), y = g.y(j), phi = obstacle(x, y);
       const double value = avg.w * k;

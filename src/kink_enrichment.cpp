@@ -130,14 +130,15 @@ bool kink_fits(const Grid& g, const EdgeCurve& c) {
   const double clearance = std::min({c.cx - c.r, g.whole_lx() - c.cx - c.r, c.cy - c.r, g.whole_ly() - c.cy - c.r});
   // The cells where chi is not 0 reach 2.5 + sqrt(2) cells past the rim; their nodes must all carry
   // unknowns. A disk two cells across its radius keeps its centre out of every cell the rim cuts.
-  return c.r >= 2 * g.h && clearance >= (kKinkZeroCells + 1.5) * g.h;
+  return c.r >= kKinkMinRadiusCells * g.h && clearance >= (kKinkZeroCells + 1.5) * g.h;
 }
 
 KinkEnrichment make_kink_enrichment(const Grid& g, const EdgeCurve& circle, int knots) {
   if (circle.kind != EdgeCurve::Kind::Circle) throw std::invalid_argument("--enrich ring needs a circle (a cylinder or --edge circle:)");
   if (knots < 8 || knots % 4) throw std::invalid_argument("make_kink_enrichment: the knots must be a multiple of 4, at least 8");
   if (!kink_fits(g, circle))
-    throw std::invalid_argument("--enrich ring: the circle must be at least 2 cells in radius and 4 cells from every clamped edge");
+    throw std::invalid_argument("--enrich ring: the circle must be at least 2 cells in radius and " +
+                                std::to_string(static_cast<int>(kKinkZeroCells + 1.5)) + " cells from every clamped edge");
   const double tol = 1e-9 * g.h;
   if ((g.mirror_x && std::abs(circle.cx - g.lx()) > tol) || (g.mirror_y && std::abs(circle.cy - g.ly()) > tol))
     throw std::logic_error("make_kink_enrichment: the circle's centre is not on the part's mirror lines");
@@ -178,6 +179,8 @@ SpMat kink_interpolant(const Grid& g, const KinkEnrichment& e) {
     for (int i = 0; i <= g.nx; ++i) {
       if (!g.is_interior(i, j)) continue;
       const double dx = g.x(i) - e.cx, dy = g.y(j) - e.cy, r = std::hypot(dx, dy);
+      // Only the nodes of squares where chi is not 0 are ever read: within outer + sqrt(2) cells.
+      if (r - e.a >= e.outer + 1.5 * g.h) continue;
       const Radial gr = cube(r - e.a);
       if (gr.g2 == 0) continue;
       const double th = std::atan2(dy, dx);
@@ -197,7 +200,8 @@ SpMat kink_interpolant(const Grid& g, const KinkEnrichment& e) {
 }
 
 namespace {
-// psi = chi D, D = F - I_h F, at a point: its value and Laplacian from D's derivatives and chi's.
+// psi = chi D, D = F - I_h F, of (D31) at a point: its value and Laplacian by the product rule, since
+// D and chi are known apart (D's derivatives Cartesian, chi's along the radius).
 struct Psi {
   double v, lap;
 };
@@ -230,7 +234,8 @@ struct CellBlocks {
   }
 };
 
-// Adds the integrand at the point r along the ray at angle th (cosine cs, sine sn), weight wt.
+// Eq. (D31)'s block integrands at the point r along the ray at angle th (cosine cs, sine sn), weight
+// wt: (Lap phi_i, Lap psi_k), (Lap psi_k, Lap psi_l) and (f, psi_k) for the functions met in the cell.
 void add_point(const Grid& g, const KinkEnrichment& e, const Field& f, double x0, double y0, double r, double cs, double sn,
                double wt, const SplinesAt& sp, const int* idx, CellBlocks& cb) {
   const int L = static_cast<int>(cb.met.size());
@@ -261,7 +266,7 @@ void add_point(const Grid& g, const KinkEnrichment& e, const Field& f, double x0
 }  // namespace
 
 // @region kink-blocks
-// Eq. (D31)'s blocks, cell by cell over the cells within 3.5 cells of the rim, in polar coordinates
+// Eq. (D31)'s blocks, cell by cell over the cells that reach the band where chi is not 0, in polar coordinates
 // about the centre. The angle is split at the cell's corners, where the rim or either end of the
 // cut-off crosses a side, and at the splines' knots; on each piece the ray's part of the cell is a
 // smooth function of the angle, split again at the rim and the cut-off's ends, and the integrand is
@@ -271,7 +276,7 @@ KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const Sp
   const double h = g.h, spacing = 2 * M_PI / e.knots, radii[3] = {e.a, e.a + e.inner, e.a + e.outer};
   // Eight points each way: with six the blocks are 1e-6 off a rule that knows nothing of the rim
   // (tests/test_kink_enrichment.cpp), though the errors of results/kink.csv move by under 0.1 %.
-  const Quadrature1D qt = gauss_legendre(8), qr = gauss_legendre(8);
+  const Quadrature1D qt = gauss_legendre(kKinkGaussPoints), qr = gauss_legendre(kKinkGaussPoints);
   const RowSpMat P = interpolant;  // rows: a node's unknowns
   std::vector<Eigen::Triplet<double>> t;
   KinkBlocks out;
@@ -331,14 +336,14 @@ KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const Sp
 }
 // @end kink-blocks
 
-KinkValue kink_field(const Grid& g, const KinkEnrichment& e, const VectorXd& c, const VectorXd& Pc, double x, double y) {
+KinkValue kink_field_in(const Grid& g, const KinkEnrichment& e, const VectorXd& c, const VectorXd& Pc, int ex, int ey,
+                        double t, double s, int flips, double x, double y) {
   KinkValue out;
   const double dx = x - e.cx, dy = y - e.cy, r = std::hypot(dx, dy);
+  // Deeper inside than any square the rim cuts (within sqrt(2) cells of it), psi_k is zero.
+  if (r - e.a < -1.5 * g.h) return out;
   const Radial chi = cutoff(e, r - e.a);
   if (chi.g == 0 && chi.g1 == 0) return out;
-  int ex, ey, flips = 0;
-  double t, s;
-  if (!g.locate(x, y, ex, ey, t, s, &flips)) return out;
   const auto dofs = g.element_dofs(ex, ey);
   const LocalBasis lb = bfs_basis(t, s, g.h);
   KinkValue D;
@@ -357,17 +362,26 @@ KinkValue kink_field(const Grid& g, const KinkEnrichment& e, const VectorXd& c, 
     const SplinesAt sp = splines_at(e, th < 0 ? th + 2 * M_PI : th);
     for (int i = 0; i < sp.count; ++i) add(D, cartesian(F, sp.b[i], r, dx / r, dy / r), c[e.function_of_spline[sp.j[i]]]);
   }
+  out.w = chi.g * D.w, out.wx = chi.g * D.wx, out.wy = chi.g * D.wy;
+  out.wxx = chi.g * D.wxx, out.wxy = chi.g * D.wxy, out.wyy = chi.g * D.wyy;
+  if (chi.g1 == 0 && chi.g2 == 0) return out;  // chi flat here: no product-rule terms
   // Product rule with chi(d(x, y)): d_x = cos, d_y = sin, d_xx = sin^2 / r, d_xy = -cos sin / r, d_yy = cos^2 / r.
   const double cs = dx / r, sn = dy / r;
   const double cx = chi.g1 * cs, cy = chi.g1 * sn;
   const double cxx = chi.g2 * cs * cs + chi.g1 * sn * sn / r, cyy = chi.g2 * sn * sn + chi.g1 * cs * cs / r;
   const double cxy = chi.g2 * cs * sn - chi.g1 * cs * sn / r;
-  out.w = chi.g * D.w;
-  out.wx = chi.g * D.wx + cx * D.w, out.wy = chi.g * D.wy + cy * D.w;
-  out.wxx = chi.g * D.wxx + 2 * cx * D.wx + cxx * D.w;
-  out.wyy = chi.g * D.wyy + 2 * cy * D.wy + cyy * D.w;
-  out.wxy = chi.g * D.wxy + cx * D.wy + cy * D.wx + cxy * D.w;
+  out.wx += cx * D.w, out.wy += cy * D.w;
+  out.wxx += 2 * cx * D.wx + cxx * D.w;
+  out.wyy += 2 * cy * D.wy + cyy * D.w;
+  out.wxy += cx * D.wy + cy * D.wx + cxy * D.w;
   return out;
+}
+
+KinkValue kink_field(const Grid& g, const KinkEnrichment& e, const VectorXd& c, const VectorXd& Pc, double x, double y) {
+  int ex, ey, flips = 0;
+  double t, s;
+  if (!g.locate(x, y, ex, ey, t, s, &flips)) return {};
+  return kink_field_in(g, e, c, Pc, ex, ey, t, s, flips, x, y);
 }
 
 KinkEnrichment unfold_kink(const KinkEnrichment& part, const VectorXd& c_part, VectorXd& c_whole) {

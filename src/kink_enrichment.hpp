@@ -24,9 +24,16 @@
 
 namespace plate {
 
-// The cut-off chi of (D31): 1 up to this many cells outside the rim (every square the rim cuts lies
-// within sqrt(2) cells of it), 0 from the second on.
+// The cut-off chi of (D31): 1 up to kKinkFlatCells cells outside the rim (every square the rim
+// cuts lies within sqrt(2) cells of it), 0 from kKinkZeroCells cells on.
 constexpr double kKinkFlatCells = 1.5, kKinkZeroCells = 2.5;
+// (D31) fits a grid whose circle is at least this many cells in radius (so no square the rim cuts
+// holds its centre) and kKinkZeroCells + 1.5 cells from every clamped edge.
+constexpr double kKinkMinRadiusCells = 2;
+// The edge rows' knot spacing, in cells, where (D31) is on (problem.hpp's rows_on).
+constexpr double kKinkKnotCells = 2;
+// Gauss points each way of the polar rule of the blocks.
+constexpr int kKinkGaussPoints = 8;
 
 // How the space is widened: not at all, or with (D31) on the scene's circle.
 struct EnrichSpec {
@@ -44,8 +51,9 @@ struct KinkEnrichment {
   int size() const { return functions; }
 };
 
-// Whether (D31) fits grid g: the circle at least two cells across its radius and its band (with the
-// cells it touches) clear of every clamped edge, 4 cells. A coarser grid of a sequence that fails this is solved in the plain space.
+// Whether (D31) fits grid g: the circle at least two cells in radius, and every square where chi is
+// not 0 clear of the clamped edges (kKinkZeroCells + 1.5 cells from the rim). A coarser grid of a
+// sequence that fails this is solved in the plain space.
 bool kink_fits(const Grid& g, const EdgeCurve& circle);
 
 // The enrichment of (D31) for a circle on grid g (a whole plate or a part), with the `knots` of the
@@ -75,6 +83,10 @@ KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const Sp
 // sum_k c_k psi_k at (x, y), a point of the whole plate (a part reads its image), with Pc = P c the
 // interpolant's coefficients: the enrichment's share of the field.
 KinkValue kink_field(const Grid& g, const KinkEnrichment& e, const VectorXd& c, const VectorXd& Pc, double x, double y);
+// The same read in element (ex, ey) at local (t, s) (flips as Grid::locate gives them): at a node
+// or on a side, each element's own second derivatives, which jump there.
+KinkValue kink_field_in(const Grid& g, const KinkEnrichment& e, const VectorXd& c, const VectorXd& Pc, int ex, int ey,
+                        double t, double s, int flips, double x, double y);
 
 // The enrichment of a part (mirror.hpp) on the whole plate: every spline its own function, its
 // coefficient that of the part's function it belongs to.

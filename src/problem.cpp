@@ -78,9 +78,9 @@ void check_obstacle_at_nodes(const Grid& g, const Field& obstacle) {
     for (int i = 0; i <= g.nx; ++i) check_obstacle_value(g.x(i), g.y(j), obstacle(g.x(i), g.y(j)));
 }
 
-// S^T W S. For Gauss sampling this equals the consistent mass matrix, which we assemble by
-// stencil instead of from 16 points per element.
-// The enrichment (D31) has no rows of S: it vanishes on the rim and inside it.
+// S^T W S on every unknown of the space, the enrichment's (D31) included. For Gauss sampling this
+// equals the consistent mass matrix, which we assemble by stencil instead of from 16 points per
+// element.
 static SpMat sampling_mass(const Problem& p) {
   const Grid& g = p.grid;
   const Sampling& s = p.sampling;
@@ -94,7 +94,6 @@ static SpMat sampling_mass(const Problem& p) {
   return M;
 }
 
-// S with a (zero) column for every unknown of the space, the enrichment's included.
 // With the enrichment (D31) every row gets a column per function, psi_k read at its sample. On the
 // rim psi_k = -I_h F_k, so an edge row's columns are -S P; at a node psi_k vanishes, so an interior
 // row's are zero. Made anew from the grid's columns each time rows are made or added.
@@ -167,7 +166,7 @@ bool kink_on(const Grid& g, const Scene& s, const SamplingSpec& spec) {
 // the rows against a plate that could not follow the kink.
 EdgeRows rows_on(const Grid& g, const Scene& s, const SamplingSpec& spec) {
   EdgeRows rows = spec.rows;
-  if (kink_on(g, s, spec) && rows.cells == 0) rows.cells = 2;
+  if (kink_on(g, s, spec) && rows.cells == 0) rows.cells = kKinkKnotCells;
   return rows;
 }
 // @end kink-rows

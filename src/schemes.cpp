@@ -167,6 +167,8 @@ void validate(const SolveOptions& o) {
 
 SolveResult solve(const Problem& p, const SolveOptions& o) {
   validate(o);
+  // The penalty schemes, their bounds and rates are written for the grid's space alone.
+  if (p.kink) throw std::logic_error("the penalty schemes take the plain space: the problem carries the kink (D31)");
   SolveResult res;
   res.w = VectorXd::Zero(p.grid.unknowns());  // starting guess w^{eps,0} = 0
   const auto t_start = Clock::now();

@@ -139,8 +139,8 @@ TEST(KinkEnrichment, RefusesWhereItDoesNotFit) {
   EXPECT_THROW(make_kink_enrichment(make_grid(32), kRim, 10), std::invalid_argument);
 }
 
-// Against the rim-contact series on the paper's scene and an off-centre cylinder (a whole plate:
-// no mirror lines): max w and the total force on n = 32, 64, 128 with the kink carried. Observed
+// Against the rim-contact series on the paper's scene (a quarter solved) and an off-centre cylinder
+// (a half: one mirror line): max w and the total force on n = 32, 64, 128 with the kink carried. Observed
 // orders of at least 3.8 between the last two grids, and n = 128 within 5e-9 (max w) and 5e-8
 // (force) of the series, where the plain space is off by 3e-7 and 4e-7.
 TEST(KinkEnrichment, ConvergesAtOrderFourAgainstTheSeries) {
