@@ -159,8 +159,9 @@ void add_exact_options(CLI::App& app, Options& o) {
   o.exact->add_option("--enrich", o.enrich,
                       "auto (on a circle with edge sampling, the space widened by functions that carry the kink of the "
                       "line load at the rim (D31), on every grid of the sequence where the circle is at least 2 cells "
-                      "in radius and 5 cells from the clamped edges; the plain space elsewhere), ring (the same, and an "
-                      "error where it does not fit the grid asked for) or none (the plain space)")
+                      "in radius and " + plate::fmt("%g", plate::kKinkZeroCells + 1.5) + " cells from the clamped edges; "
+                      "the plain space elsewhere, and the error bars from the grids that carry it), ring (the same, and "
+                      "an error where it does not fit the grid asked for) or none (the plain space)")
       ->check(CLI::IsMember({"auto", "ring", "none"}))
       ->capture_default_str();
   o.exact->add_flag("--no-globalise", o.no_globalise, "end with an error if the active set repeats, instead of the monotone fallback");
@@ -347,8 +348,8 @@ Run check(const Options& o) {
     if (o.enrich == "ring" && !circle)
       throw std::invalid_argument("--enrich ring needs edge sampling of a circle (--sampling edge, the cylinder or --edge circle:...)");
     if (o.enrich == "ring" && !kink_fits(r.g, r.scene.edge))
-      throw std::invalid_argument("--enrich ring: the circle must be at least 2 cells in radius and 4 cells from every clamped edge "
-                                  "on this grid (h = " + fmt("%g", r.g.h) + ")");
+      throw std::invalid_argument("--enrich ring: the circle must be at least 2 cells in radius and " +
+                                  fmt("%g", kKinkZeroCells + 1.5) + " cells from every clamped edge on this grid (h = " + fmt("%g", r.g.h) + ")");
     if (circle) r.spec.enrich.kind = EnrichSpec::Kind::Ring;
   }
   // The memory the model solved needs: the part the mirrors leave, for the exact scheme. A grid whose
@@ -416,7 +417,11 @@ void set_error_bars(Run& r, const std::vector<LevelAnswer>& levels) {
   std::vector<const LevelAnswer*> use;
   for (auto it = levels.rbegin(); it != levels.rend() && use.size() < 4; ++it) {
     // Grids of one space only: a coarser grid that (D31) did not fit converges otherwise.
-    if (!it->certified || (!use.empty() && (2 * it->cells != use.back()->cells || it->enriched != use.back()->enriched))) break;
+    if (!use.empty() && it->enriched != use.back()->enriched && use.size() < 4) {
+      r.report.bar_grids_note = "the coarser grids, which the kink functions (D31) do not fit, were solved in the plain space and are left out";
+      break;
+    }
+    if (!it->certified || (!use.empty() && 2 * it->cells != use.back()->cells)) break;
     use.push_back(&*it);
   }
   std::reverse(use.begin(), use.end());

@@ -417,6 +417,10 @@ void model_numbers(Numbers& num) {
   num.put("model.gram_block", count(kGramBlock), "src/dual_active_set.hpp kGramBlock");
   num.put("model.kink_flat_cells", fmt("%g", kKinkFlatCells), "src/kink_enrichment.hpp kKinkFlatCells");
   num.put("model.kink_zero_cells", fmt("%g", kKinkZeroCells), "src/kink_enrichment.hpp kKinkZeroCells");
+  num.put("model.kink_clearance_cells", fmt("%g", kKinkZeroCells + 1.5), "src/kink_enrichment.hpp kKinkZeroCells + 1.5");
+  num.put("model.kink_radius_cells", fmt("%g", kKinkMinRadiusCells), "src/kink_enrichment.hpp kKinkMinRadiusCells");
+  num.put("model.kink_knot_cells", fmt("%g", kKinkKnotCells), "src/kink_enrichment.hpp kKinkKnotCells");
+  num.put("model.kink_gauss_points", count(kKinkGaussPoints), "src/kink_enrichment.hpp kKinkGaussPoints");
 }
 
 // One run of the linear scheme (results/linear_history.csv): after its first step, how the true

@@ -268,7 +268,7 @@ void kink_target(std::ostream& md, const std::vector<Run>& runs, const Config& k
   md << "- Max w within 1e-9 and the force within 1e-8 at least 20 times sooner with the kink carried (D31) than in "
         "the plain space: ";
   if (!k || !p)
-    md << "**not measured**: " << (k ? "the plain space" : "the default") << " did not get there.\n";
+    md << "**not measured**: " << (k ? "the plain space" : p ? "the default" : "neither space") << " did not get there.\n";
   else
     md << met(p->seconds >= 20 * k->seconds) << ": n = " << k->n << " in " << fmt("%.3g", k->seconds) << " s and "
        << fmt("%.0f", k->peak_mib) << " MiB against n = " << p->n << " in " << fmt("%.3g", p->seconds) << " s and "

@@ -162,7 +162,7 @@ void check_json(Json& j, const Report& r) {
   }
 }
 Json error_bars_json(const Report& r) {
-  Json j = {{"grids", r.bar_grids}, {"note", r.bar_note}};
+  Json j = {{"grids", r.bar_grids}, {"note", r.bar_note}, {"grids_note", r.bar_grids_note}};
   for (const auto& [name, b] : r.bars)
     j[name] = {{"value", number(b.value)}, {"bar", number(b.bar)}, {"basis", b.basis}, {"steady", b.steady},
                {"order", number(b.order)}, {"limit", number(b.limit)}};
@@ -178,7 +178,7 @@ std::string error_bars_text(const Report& r) {
   }
   o << "error bars (continuum: the distance to the plate's answer, estimated from the grids n =";
   for (size_t k = 0; k < r.bar_grids.size(); ++k) o << (k ? ", " : " ") << r.bar_grids[k];
-  o << " of this run's sequence):\n";
+  o << " of this run's sequence" << (r.bar_grids_note.empty() ? "" : "; " + r.bar_grids_note) << "):\n";
   for (const auto& [name, b] : r.bars) {
     o << "  " << name << " = " << num(b.value) << " +- " << fmt("%.2g", b.bar) << "  (";
     if (b.basis == "richardson") o << "Richardson, order " << fmt("%.2f", b.order) << ", steady";

@@ -41,6 +41,7 @@ struct Report {
   // the run's sequence; empty with the reason in `bar_note` when there are none.
   std::vector<std::pair<std::string, ErrorBar>> bars;
   std::vector<int> bar_grids;
+  std::string bar_grids_note;  // why coarser grids of the sequence were left out, if they were
   std::string bar_note;
 };
 // What the report states of the answer w, computed once before it is written: the extremes of w_h
