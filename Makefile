@@ -61,6 +61,11 @@ say = @printf '\n== make: %s (about %s)\n' $(1) $(2)
 
 .PHONY: all steps test test-fast deps build results paper document crosscheck hard-cases continuum rim-series liftoff kink own-scenes bench check-results clean help FORCE
 
+# An interrupted recipe would have make delete its targets, the committed results among them. Every
+# program writes its files whole (a temporary file, then rename), so what is there is never half
+# written: keep it. It is older than the program that makes it, so the next make remakes it.
+.PRECIOUS: $(wildcard results/*)
+
 # `make all` runs the steps that share no output side by side, one per core, then the benchmarks
 # alone (so that no other step disturbs their timings), then the document, and ends with a table of
 # what each step cost (scripts/step_report.sh).
