@@ -43,16 +43,20 @@ PlateField::PlateField(const Problem& p, const VectorXd& w) : p_(p), w_(w) {
   if (p.kink) c_ = w.tail(p.kink->size()), Pc_ = p.kink_interp * c_;
 }
 
-PointValues PlateField::enrichment_at(double x, double y) const {
-  if (!p_.kink) return {0, 0, 0, 0, 0, 0};
-  const KinkValue k = kink_field(p_.grid, *p_.kink, c_, Pc_, x, y);
+// The enrichment's share (D31) at (x, y), with its interpolant's part I read by the caller.
+PointValues PlateField::share(const PointValues& I, double x, double y) const {
+  const KinkValue k = kink_field(*p_.kink, c_, KinkValue{I.w, I.wx, I.wy, I.wxx, I.wxy, I.wyy}, x, y);
   return {k.w, k.wx, k.wy, k.wxx, k.wxy, k.wyy};
 }
 
+PointValues PlateField::enrichment_at(double x, double y) const {
+  if (!p_.kink || !kink_near(*p_.kink, x, y)) return {0, 0, 0, 0, 0, 0};
+  return share(evaluate(p_.grid, Pc_, x, y), x, y);
+}
+
 PointValues PlateField::enrichment_in(int ex, int ey, double t, double s, double x, double y) const {
-  if (!p_.kink) return {0, 0, 0, 0, 0, 0};
-  const KinkValue k = kink_field_in(p_.grid, *p_.kink, c_, Pc_, ex, ey, t, s, 0, x, y);
-  return {k.w, k.wx, k.wy, k.wxx, k.wxy, k.wyy};
+  if (!p_.kink || !kink_near(*p_.kink, x, y)) return {0, 0, 0, 0, 0, 0};
+  return share(evaluate_in(p_.grid, Pc_, ex, ey, t, s), x, y);
 }
 
 PointValues PlateField::at(double x, double y) const {

@@ -24,6 +24,7 @@ class PlateField {
   PointValues enrichment_in(int ex, int ey, double t, double s, double x, double y) const;
 
  private:
+  PointValues share(const PointValues& interpolant, double x, double y) const;
   const Problem& p_;
   const VectorXd& w_;
   VectorXd c_, Pc_;  // the enrichment's coefficients, and its interpolant's

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "bfs_element.hpp"
@@ -42,14 +43,6 @@ Radial cutoff(const KinkEnrichment& e, double d) {
 }
 // @end kink-functions
 
-// The angle wrapped into (-pi, pi].
-double wrap(double t) {
-  t = std::fmod(t, 2 * M_PI);
-  if (t > M_PI) t -= 2 * M_PI;
-  if (t <= -M_PI) t += 2 * M_PI;
-  return t;
-}
-
 // The (at most four) splines that do not vanish at angle theta: their indices and values.
 struct SplinesAt {
   int count = 0;
@@ -62,7 +55,7 @@ SplinesAt splines_at(const KinkEnrichment& e, double theta) {
   const int j0 = static_cast<int>(std::floor(theta / spacing));
   for (int j = j0 - 1; j <= j0 + 2; ++j) {
     const int jj = ((j % e.knots) + e.knots) % e.knots;
-    Spline3 b = cubic_bspline(wrap(theta - jj * spacing) / spacing);
+    Spline3 b = cubic_bspline(std::remainder(theta - jj * spacing, 2 * M_PI) / spacing);
     if (b.v == 0 && b.d1 == 0 && b.d2 == 0) continue;
     b.d1 /= spacing, b.d2 /= spacing * spacing;
     s.j[s.count] = jj, s.b[s.count] = b, ++s.count;
@@ -125,20 +118,24 @@ void circle_crossings(double cx, double cy, double rho, double x0, double x1, do
 
 }  // namespace
 
-bool kink_fits(const Grid& g, const EdgeCurve& c) {
-  if (c.kind != EdgeCurve::Kind::Circle) return false;
+std::string kink_misfit(const Grid& g, const EdgeCurve& c) {
+  if (c.kind != EdgeCurve::Kind::Circle) return "the edge is not a circle";
   const double clearance = std::min({c.cx - c.r, g.whole_lx() - c.cx - c.r, c.cy - c.r, g.whole_ly() - c.cy - c.r});
   // The cells where chi is not 0 reach 2.5 + sqrt(2) cells past the rim; their nodes must all carry
   // unknowns. A disk two cells across its radius keeps its centre out of every cell the rim cuts.
-  return c.r >= kKinkMinRadiusCells * g.h && clearance >= (kKinkZeroCells + 1.5) * g.h;
+  if (c.r >= kKinkMinRadiusCells * g.h && clearance >= (kKinkZeroCells + 1.5) * g.h) return "";
+  std::ostringstream m;
+  m << "the circle must be at least " << kKinkMinRadiusCells << " cells in radius and " << kKinkZeroCells + 1.5
+    << " cells from every clamped edge on this grid (h = " << g.h << ")";
+  return m.str();
 }
+
+bool kink_fits(const Grid& g, const EdgeCurve& c) { return kink_misfit(g, c).empty(); }
 
 KinkEnrichment make_kink_enrichment(const Grid& g, const EdgeCurve& circle, int knots) {
   if (circle.kind != EdgeCurve::Kind::Circle) throw std::invalid_argument("--enrich ring needs a circle (a cylinder or --edge circle:)");
   if (knots < 8 || knots % 4) throw std::invalid_argument("make_kink_enrichment: the knots must be a multiple of 4, at least 8");
-  if (!kink_fits(g, circle))
-    throw std::invalid_argument("--enrich ring: the circle must be at least 2 cells in radius and " +
-                                std::to_string(static_cast<int>(kKinkZeroCells + 1.5)) + " cells from every clamped edge");
+  if (const std::string why = kink_misfit(g, circle); !why.empty()) throw std::invalid_argument("--enrich ring: " + why);
   const double tol = 1e-9 * g.h;
   if ((g.mirror_x && std::abs(circle.cx - g.lx()) > tol) || (g.mirror_y && std::abs(circle.cy - g.ly()) > tol))
     throw std::logic_error("make_kink_enrichment: the circle's centre is not on the part's mirror lines");
@@ -300,7 +297,7 @@ KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const Sp
       for (double x : {x0, x1})
         for (double y : {y0, y1}) cuts.push_back(std::atan2(y - e.cy, x - e.cx));
       for (double rho : radii) circle_crossings(e.cx, e.cy, rho, x0, x1, y0, y1, cuts);
-      for (int j = 0; j < e.knots; ++j) cuts.push_back(wrap(j * spacing));
+      for (int j = 0; j < e.knots; ++j) cuts.push_back(std::remainder(j * spacing, 2 * M_PI));
       std::sort(cuts.begin(), cuts.end());
       for (size_t c = 0; c + 1 < cuts.size(); ++c) {
         const double t0 = cuts[c], t1 = cuts[c + 1];
@@ -336,26 +333,20 @@ KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const Sp
 }
 // @end kink-blocks
 
-KinkValue kink_field_in(const Grid& g, const KinkEnrichment& e, const VectorXd& c, const VectorXd& Pc, int ex, int ey,
-                        double t, double s, int flips, double x, double y) {
+bool kink_near(const KinkEnrichment& e, double x, double y) {
+  // Deeper inside than any square the rim cuts (within sqrt(2) < kKinkFlatCells cells of it), and
+  // beyond the cut-off, psi_k is zero.
+  const double d = std::hypot(x - e.cx, y - e.cy) - e.a;
+  return d > -e.inner && d < e.outer;
+}
+
+KinkValue kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y) {
   KinkValue out;
+  if (!kink_near(e, x, y)) return out;
   const double dx = x - e.cx, dy = y - e.cy, r = std::hypot(dx, dy);
-  // Deeper inside than any square the rim cuts (within sqrt(2) cells of it), psi_k is zero.
-  if (r - e.a < -1.5 * g.h) return out;
   const Radial chi = cutoff(e, r - e.a);
-  if (chi.g == 0 && chi.g1 == 0) return out;
-  const auto dofs = g.element_dofs(ex, ey);
-  const LocalBasis lb = bfs_basis(t, s, g.h);
   KinkValue D;
-  for (int q = 0; q < 16; ++q)
-    if (dofs[q] >= 0) {
-      const double v = -Pc[dofs[q]];
-      D.w += v * lb.v[q], D.wx += v * lb.dx[q], D.wy += v * lb.dy[q], D.wxx += v * lb.dxx[q], D.wxy += v * lb.dxy[q], D.wyy += v * lb.dyy[q];
-    }
-  // Beyond a mirror line the part's interpolant is read at the image point: slopes across the line
-  // change sign.
-  if (flips & 1) D.wx = -D.wx, D.wxy = -D.wxy;
-  if (flips & 2) D.wy = -D.wy, D.wxy = -D.wxy;
+  add(D, interpolant, -1.0);
   const Radial F = cube(r - e.a);
   if (F.g2 != 0) {
     const double th = std::atan2(dy, dx);
@@ -375,13 +366,6 @@ KinkValue kink_field_in(const Grid& g, const KinkEnrichment& e, const VectorXd& 
   out.wyy += 2 * cy * D.wy + cyy * D.w;
   out.wxy += cx * D.wy + cy * D.wx + cxy * D.w;
   return out;
-}
-
-KinkValue kink_field(const Grid& g, const KinkEnrichment& e, const VectorXd& c, const VectorXd& Pc, double x, double y) {
-  int ex, ey, flips = 0;
-  double t, s;
-  if (!g.locate(x, y, ex, ey, t, s, &flips)) return {};
-  return kink_field_in(g, e, c, Pc, ex, ey, t, s, flips, x, y);
 }
 
 KinkEnrichment unfold_kink(const KinkEnrichment& part, const VectorXd& c_part, VectorXd& c_whole) {

@@ -15,6 +15,7 @@
 // plate (mirror.hpp) gets the sums of each spline with its mirror images, so every function is
 // symmetric as the solution is.
 #pragma once
+#include <string>
 #include <vector>
 
 #include "assemble.hpp"
@@ -55,6 +56,8 @@ struct KinkEnrichment {
 // not 0 clear of the clamped edges (kKinkZeroCells + 1.5 cells from the rim). A coarser grid of a
 // sequence that fails this is solved in the plain space.
 bool kink_fits(const Grid& g, const EdgeCurve& circle);
+// Why (D31) does not fit grid g, in words; empty where it fits.
+std::string kink_misfit(const Grid& g, const EdgeCurve& circle);
 
 // The enrichment of (D31) for a circle on grid g (a whole plate or a part), with the `knots` of the
 // edge rows' splines; throws std::invalid_argument naming --enrich if the curve is not a circle or
@@ -80,13 +83,12 @@ struct KinkBlocks {
 };
 KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const SpMat& interpolant, const Field& f);
 
-// sum_k c_k psi_k at (x, y), a point of the whole plate (a part reads its image), with Pc = P c the
-// interpolant's coefficients: the enrichment's share of the field.
-KinkValue kink_field(const Grid& g, const KinkEnrichment& e, const VectorXd& c, const VectorXd& Pc, double x, double y);
-// The same read in element (ex, ey) at local (t, s) (flips as Grid::locate gives them): at a node
-// or on a side, each element's own second derivatives, which jump there.
-KinkValue kink_field_in(const Grid& g, const KinkEnrichment& e, const VectorXd& c, const VectorXd& Pc, int ex, int ey,
-                        double t, double s, int flips, double x, double y);
+// Whether psi_k can be nonzero at (x, y): a square the rim cuts, or the band where chi is not 0.
+bool kink_near(const KinkEnrichment& e, double x, double y);
+// sum_k c_k psi_k at (x, y), given `interpolant`, the value and derivatives there of the grid's
+// functions with coefficients P c (the interpolant of sum_k c_k F_k, which the caller reads from the
+// grid: contact.hpp's PlateField, across mirror lines too): the enrichment's share of the field.
+KinkValue kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y);
 
 // The enrichment of a part (mirror.hpp) on the whole plate: every spline its own function, its
 // coefficient that of the part's function it belongs to.

@@ -100,13 +100,14 @@ static SpMat sampling_mass(const Problem& p) {
 static void fit_columns(Problem& p) {
   const int N = p.grid.unknowns();
   if (!p.kink) return;
-  const RowSpMat SP = p.sampling.S.leftCols(N) * p.kink_interp;
+  const int first = p.sampling.edge_begin;
+  const RowSpMat SP = p.sampling.S.bottomRows(p.sampling.edge_size()).leftCols(N) * p.kink_interp;  // edge rows only
   std::vector<Eigen::Triplet<double>> t;
   for (Eigen::Index r = 0; r < p.sampling.S.outerSize(); ++r) {
     for (RowSpMat::InnerIterator it(p.sampling.S, r); it; ++it)
       if (it.col() < N) t.emplace_back(r, it.col(), it.value());
-    if (r >= p.sampling.edge_begin)
-      for (RowSpMat::InnerIterator it(SP, r); it; ++it) t.emplace_back(r, N + it.col(), -it.value());
+    if (r >= first)
+      for (RowSpMat::InnerIterator it(SP, r - first); it; ++it) t.emplace_back(r, N + it.col(), -it.value());
   }
   RowSpMat S(p.sampling.S.rows(), p.unknowns());
   S.setFromTriplets(t.begin(), t.end());

@@ -19,6 +19,12 @@ using namespace plate;
 namespace {
 const EdgeCurve kRim = circle_edge(0.5, 0.5, 0.25);
 
+// sum_k c_k psi_k at (x, y), its interpolant's part read from the grid as plate reads it.
+KinkValue field(const Grid& g, const KinkEnrichment& e, const VectorXd& c, const VectorXd& Pc, double x, double y) {
+  const PointValues I = evaluate(g, Pc, x, y);
+  return kink_field(e, c, KinkValue{I.w, I.wx, I.wy, I.wxx, I.wxy, I.wyy}, x, y);
+}
+
 // The coefficients of one function.
 VectorXd unit(int m, int k) {
   VectorXd c = VectorXd::Zero(m);
@@ -49,7 +55,7 @@ Brute brute(const Grid& g, const KinkEnrichment& e, const SpMat& P, int k, int d
             for (size_t j = 0; j < q.points.size(); ++j) {
               const double x = ex * g.h + (sx + q.points[i]) * hs, y = ey * g.h + (sy + q.points[j]) * hs;
               const double wt = q.weights[i] * q.weights[j] * hs * hs;
-              const KinkValue v = kink_field(g, e, c, Pc, x, y);
+              const KinkValue v = field(g, e, c, Pc, x, y);
               const double lap = v.wxx + v.wyy;
               out.e += wt * lap * lap;
               out.load += wt * v.w;
@@ -102,7 +108,7 @@ TEST(KinkEnrichment, VanishesAtNodesIsC1AndCarriesTheJump) {
   double size = 0, at_nodes = 0;
   for (int j = 1; j < g.ny; ++j)
     for (int i = 1; i < g.nx; ++i) {
-      const KinkValue v = kink_field(g, e, c, Pc, g.x(i), g.y(j));
+      const KinkValue v = field(g, e, c, Pc, g.x(i), g.y(j));
       at_nodes = std::max({at_nodes, std::abs(v.w), std::abs(v.wx), std::abs(v.wy), std::abs(v.wxy)});
       size = std::max(size, std::abs(v.wxx) + std::abs(v.wyy));
     }
@@ -111,14 +117,14 @@ TEST(KinkEnrichment, VanishesAtNodesIsC1AndCarriesTheJump) {
   // Across the side x = 24 h (cells cut by the rim near y = 0.5), from either cell.
   const double xs = g.x(24), d = 1e-10;
   for (double y : {0.45, 0.5, 0.53}) {
-    const KinkValue l = kink_field(g, e, c, Pc, xs - d, y), r = kink_field(g, e, c, Pc, xs + d, y);
+    const KinkValue l = field(g, e, c, Pc, xs - d, y), r = field(g, e, c, Pc, xs + d, y);
     EXPECT_NEAR(l.w, r.w, 1e-12);
     EXPECT_NEAR(l.wx, r.wx, 1e-9);
     EXPECT_NEAR(l.wy, r.wy, 1e-9);
   }
   for (double theta : {0.1, 1.0, 2.5}) {
     const double cs = std::cos(theta), sn = std::sin(theta), step = 2e-5;
-    auto w = [&](double r) { return kink_field(g, e, c, Pc, 0.5 + r * cs, 0.5 + r * sn).w; };
+    auto w = [&](double r) { return field(g, e, c, Pc, 0.5 + r * cs, 0.5 + r * sn).w; };
     auto third = [&](double side) {
       const double a = 0.25;
       return side * (w(a + 3 * side * step) - 3 * w(a + 2 * side * step) + 3 * w(a + side * step) - w(a)) / (step * step * step);

@@ -347,9 +347,8 @@ Run check(const Options& o) {
     const bool circle = r.spec.kind == SamplingKind::Edge && r.scene.edge.kind == EdgeCurve::Kind::Circle;
     if (o.enrich == "ring" && !circle)
       throw std::invalid_argument("--enrich ring needs edge sampling of a circle (--sampling edge, the cylinder or --edge circle:...)");
-    if (o.enrich == "ring" && !kink_fits(r.g, r.scene.edge))
-      throw std::invalid_argument("--enrich ring: the circle must be at least 2 cells in radius and " +
-                                  fmt("%g", kKinkZeroCells + 1.5) + " cells from every clamped edge on this grid (h = " + fmt("%g", r.g.h) + ")");
+    if (const std::string why = kink_misfit(r.g, r.scene.edge); o.enrich == "ring" && !why.empty())
+      throw std::invalid_argument("--enrich ring: " + why);
     if (circle) r.spec.enrich.kind = EnrichSpec::Kind::Ring;
   }
   // The memory the model solved needs: the part the mirrors leave, for the exact scheme. A grid whose
