@@ -38,7 +38,7 @@ BENCH     := results/speed_vs_error.csv results/speed_vs_error.md
 TTA       := results/time_to_accuracy.csv results/time_to_accuracy.md
 BENCH_ALL := $(BENCH) results/speed_vs_error.svg results/speed_vs_error.png results/micro_benchmarks.md \
              $(TTA) results/time_to_accuracy.svg results/time_to_accuracy.png
-PAPER_INPUTS := paper/paper.md paper/style.css $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp src/programs/*.cpp src/programs/support/*.cpp src/programs/support/*.hpp) \
+PAPER_INPUTS := paper/paper.md paper/style.css paper/print.html $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp src/programs/*.cpp src/programs/support/*.cpp src/programs/support/*.hpp) \
                 $(RESULTS) $(RIM_SERIES) $(CONTINUUM) $(LIFTOFF) $(KINK) $(OWN_SCENES) $(CROSSCHECK) $(RIM_FIGURE) $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) $(TABLE_FIGURE) $(HARD_CASES) $(BENCH_ALL) $(NUMBERS)
 # The packages whose versions the document's reference list gives.
 VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread libmuparser-dev libcli11-dev freefem++ gmsh \
@@ -218,7 +218,7 @@ define render_paper
 	pandoc paper/paper.md --from markdown --to html5 --standalone --self-contained --mathml \
 	  --lua-filter paper/filters/numbers.lua \
 	  --lua-filter paper/filters/equations.lua --lua-filter paper/filters/code.lua \
-	  --lua-filter paper/filters/include.lua --lua-filter paper/filters/numbering.lua --css paper/style.css --resource-path . \
+	  --lua-filter paper/filters/include.lua --lua-filter paper/filters/numbering.lua --css paper/style.css --include-after-body paper/print.html --resource-path . \
 	  --toc --toc-depth 2 --output results/paper.html.tmp && mv results/paper.html.tmp results/paper.html
 endef
 

@@ -41,9 +41,7 @@ Eigen::Matrix<T, 16, 16> integrate_gram(T h, Pick pick) {
 }
 }  // namespace
 
-// @region bfs-basis
 LocalBasis bfs_basis(double t, double s, double h) { return basis(t, s, h); }
-// @end bfs-basis
 
 // @region bfs-stiffness
 // Eq. (8), first term: the element matrix of (Lap u_h, Lap v_h).

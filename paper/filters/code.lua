@@ -3,8 +3,11 @@
 --   ```
 -- is replaced by the lines between "// @region linear-scheme" and "// @end linear-scheme" in
 -- that file, with a caption line naming the file and the lines. A missing file or region stops
--- the build (so does a region that is opened twice or never closed). An attribute
--- fold="The code of ..." shows the listing closed, under that line.
+-- the build (so does a region that is opened twice or never closed). A listing longer than
+-- kFoldLines lines is shown closed on screen, under the line its attribute fold="The code of ..."
+-- gives, and opens when the page is printed (paper/print.html): paper has no click to open it.
+local kFoldLines = 40
+
 local function read_lines(path)
   local f = io.open(path, "r")
   if not f then error("code.lua: cannot open " .. path) end
@@ -45,11 +48,15 @@ function CodeBlock(el)
   local text, a, b = region(path, name)
   local caption = pandoc.Para({pandoc.Code(path), pandoc.Str((a == b and ", line " .. a or ", lines " .. a .. "–" .. b) .. " (region "),
                                pandoc.Code(name), pandoc.Str(")")})
-  local listing = pandoc.Div({caption, pandoc.CodeBlock(text, {class = "cpp"})}, {class = "listing"})
-  -- fold="..." keeps a long listing out of the reader's way: closed, with that line to open it.
-  local fold = el.attributes["fold"]
-  if not fold then return listing end
   local lines = select(2, text:gsub("\n", "")) + 1
+  -- A short listing is kept on one printed page; a long one may run on, rather than leave half a page blank.
+  local listing = pandoc.Div({caption, pandoc.CodeBlock(text, {class = "cpp"})},
+                             {class = lines <= 15 and "listing short" or "listing"})
+  -- On screen a long listing stays out of the way, closed under its fold line; a short one is
+  -- read where it stands.
+  if lines <= kFoldLines then return listing end
+  local fold = el.attributes["fold"]
+  if not fold then error("code.lua: region " .. name .. " has " .. lines .. " lines and no fold=\"...\" line to open it") end
   return pandoc.Div({
     pandoc.RawBlock("html", "<details><summary>" .. fold .. " (" .. lines .. " lines)</summary>"),
     listing,

@@ -58,6 +58,24 @@ local function as_math(s)
   return out
 end
 
+-- The blocks under the heading named `name` (to the next heading of its level or above), and the
+-- blocks outside it, heading included.
+local function split_section(blocks, name, path)
+  local inside, outside, level, done = pandoc.List(), pandoc.List(), nil, false
+  for _, b in ipairs(blocks) do
+    if b.t == "Header" and level and not done and b.level <= level then done = true end
+    if b.t == "Header" and not level and pandoc.utils.stringify(b.content) == name then
+      level = b.level
+    elseif level and not done then
+      inside:insert(b)
+    else
+      outside:insert(b)
+    end
+  end
+  if not level then error("include.lua: " .. path .. " has no section \"" .. name .. "\"") end
+  return inside, outside
+end
+
 function Div(el)
   local path = el.attributes["include"]
   if not path then return nil end
@@ -66,7 +84,13 @@ function Div(el)
   local text = f:read("a")
   f:close()
   -- Without smart punctuation: a report that says "--scheme nonlinear" must keep its two dashes.
-  local blocks = pandoc.read(text, "markdown-smart").blocks:walk({
+  local blocks = pandoc.read(text, "markdown-smart").blocks
+  local section, except = el.attributes["section"], el.attributes["except"]
+  if section then blocks = split_section(blocks, section, path) end
+  if except then blocks = select(2, split_section(blocks, except, path)) end
+  -- pandoc 2.17's plain lists cannot walk: a Div around the blocks can.
+  if section or except then blocks = pandoc.Div(blocks):walk({}).content end
+  blocks = blocks:walk({
     Header = function(h) h.level = math.min(h.level + 2, 6); return h end,
     -- A last column of sentences (the bad-input table's "message") beside other columns would wrap a
     -- word a line: the style sheet gives it room by this class.
@@ -75,6 +99,9 @@ function Div(el)
       local last = head and head.cells[#head.cells]
       local name = last and pandoc.utils.stringify(last.contents) or ""
       if name == "message" then t.attr.classes:insert("text-last") end
+      -- Nine columns or more of numbers fill a printed page at the reports' size: the style sheet
+      -- sets them smaller in print, so that Chromium need not shrink every page to fit one table.
+      if #t.colspecs >= 9 then t.attr.classes:insert("wide") end
       return t
     end,
     -- A symbol the reports write in ASCII is set as mathematics; 6.25e-07 must not wrap after its
