@@ -397,3 +397,66 @@ TEST(Paper, PartIPrintsOnTenPagesWithTheCodeOfBothSchemes) {
     EXPECT_NE(printed.find(words), std::string::npos) << "the printed Part I lacks the code of " << scheme << ": " << words;
   }
 }
+
+// Every figure is readable at the size it prints: the smallest font its gnuplot script sets, scaled
+// as Chromium scales the drawing to fit the page, is at least 7 pt. A gnuplot SVG has no size of its
+// own (a viewBox only), so it fills the column (A4 less Chromium's margins of 0.4 in: 717 CSS px)
+// unless the print style's max-height for its image stops it first; an image of class "tall" has
+// its own max-height. 1 CSS px is 0.75 pt, and gnuplot's SVG font sizes are in those px.
+namespace {
+double print_max_height_px(const std::string& css, const std::string& selector) {
+  const std::string print = css.substr(css.find("@media print"));
+  std::smatch m;
+  const std::regex rule(std::regex_replace(selector, std::regex(R"([.])"), R"(\.)") + R"(\s*\{[^}]*max-height:\s*([0-9.]+)cm)");
+  if (!std::regex_search(print, m, rule)) return 0;
+  return std::stod(m[1]) / 2.54 * 96;
+}
+}  // namespace
+
+TEST(Paper, EveryFigurePrintsWithFontsOfSevenPointsAtLeast) {
+  const std::string css = slurp(kRoot / "paper/style.css");
+  const double normal = print_max_height_px(css, "figure img"), tall = print_max_height_px(css, "figure img.tall");
+  ASSERT_GT(normal, 0) << "style.css sets no max-height for figure img in print";
+  ASSERT_GT(tall, normal) << "style.css sets no larger max-height for figure img.tall in print";
+  const double column = 8.27 * 96 - 2 * 0.4 * 96;
+  const std::string md = slurp(kRoot / "paper/paper.md");
+  const std::regex figure(R"(\]\(results/([a-z0-9_]+)\.svg\)\{([^}]*)\})");
+  int checked = 0;
+  for (std::sregex_iterator it(md.begin(), md.end(), figure), end; it != end; ++it, ++checked) {
+    const std::string name = (*it)[1], attributes = (*it)[2];
+    const std::string gp = slurp(kRoot / "paper/figures" / (name + ".gp"));
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(gp, m, std::regex(R"(terminal svg size (\d+),(\d+)[^}\n]*font '[^,']*,(\d+)')")))
+        << name << ".gp sets no svg size and font";
+    const double width = std::stod(m[1]), height = std::stod(m[2]);
+    double smallest = std::stod(m[3]);
+    // Every other font the script sets: font ',10', font 'Helvetica,10'.
+    // (the PNG terminal's fonts are for the screen's pixels, not for print, and are left out).
+    const std::string rest = std::regex_replace(gp.substr(m.position(0) + m.length(0)), std::regex(R"(set terminal pngcairo[^}\n]*)"), "");
+    for (const std::string& size : matches(rest, std::regex(R"(font '[^,']*,(\d+(?:\.\d+)?)')")))
+      smallest = std::min(smallest, std::stod(size));
+    const double max_height = attributes.find(".tall") != std::string::npos ? tall : normal;
+    const double scale = std::min(column / width, max_height / height);
+    const double points = smallest * scale * 0.75;
+    EXPECT_GE(points, 7.0) << "Fig. " << name << " prints its smallest font (" << smallest << " px in " << width << " x "
+                           << height << ") at " << points << " pt";
+  }
+  EXPECT_GE(checked, 9);
+}
+
+// A figure's alt text is what a reader without the image gets: a plain sentence, not TeX.
+TEST(Paper, EveryFigureHasAPlainAltText) {
+  const std::string html = slurp(kRoot / "results/paper.html");
+  int images = 0;
+  // Found by hand: a regex over the whole page (several MB of embedded images) overflows the stack.
+  for (size_t at = html.find("<img "); at != std::string::npos; at = html.find("<img ", at + 1)) {
+    const std::string tag = html.substr(at, html.find('>', at) - at);
+    const size_t a = tag.find(" alt=\"");
+    ++images;
+    ASSERT_NE(a, std::string::npos) << "an image without alt text: " << tag.substr(0, 120);
+    const std::string alt = tag.substr(a + 6, tag.find('"', a + 6) - a - 6);
+    EXPECT_EQ(alt.find_first_of("\\$^_{}"), std::string::npos) << "alt text with TeX: " << alt;
+    EXPECT_GE(alt.size(), 20u) << "alt text too short to say anything: " << alt;
+  }
+  EXPECT_GE(images, 9);
+}

@@ -2,7 +2,7 @@
 # the relative error of max w and of the total contact force against h, for each sampling, measured
 # against the rim-contact series (results/rim_answer.csv). Reference slopes h^1 and h^3 are dashed.
 # Usage: gnuplot -e "fmt='svg'; out='results/continuum.svg'" paper/figures/continuum.gp   (fmt: svg or png)
-if (fmt eq 'svg') { set terminal svg size 1000,430 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 1000,430 font 'Helvetica,11' }
+if (fmt eq 'svg') { set terminal svg size 1000,430 dynamic font 'Helvetica,14' } else { set terminal pngcairo size 1000,430 font 'Helvetica,11' }
 set output out
 set datafile separator ','
 set logscale xy

@@ -3,7 +3,7 @@
 # q on n = 128 and the point rows' values on the same grid, which scatter. Right: the spline rows'
 # distance from the series, over the mean load, on every grid from n = 32: its largest value shrinks with h.
 # Usage: gnuplot -e "fmt='svg'; out='results/continuum_q.svg'" paper/figures/continuum_q.gp
-if (fmt eq 'svg') { set terminal svg size 1000,430 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 1000,430 font 'Helvetica,11' }
+if (fmt eq 'svg') { set terminal svg size 1000,430 dynamic font 'Helvetica,14' } else { set terminal pngcairo size 1000,430 font 'Helvetica,11' }
 set output out
 set datafile separator ','
 data = 'results/continuum_q.csv'

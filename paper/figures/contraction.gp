@@ -3,7 +3,7 @@
 # paper's obstacle) and the ratio of the energies of its steps, beside q = 1/(1 + eps lambda_1h),
 # q^2 and the paper's rho, on h = 1/16.
 # Usage: gnuplot -e "fmt='svg'; out='results/contraction.svg'" paper/figures/contraction.gp
-if (fmt eq 'svg') { set terminal svg size 900,520 dynamic font 'Helvetica,15' } else { set terminal pngcairo size 900,520 font 'Helvetica,12' }
+if (fmt eq 'svg') { set terminal svg size 900,500 dynamic font 'Helvetica,16' } else { set terminal pngcairo size 900,500 font 'Helvetica,12' }
 set output out
 set datafile separator ','
 set logscale x

@@ -2,11 +2,11 @@
 # max|w| at the nodes against the obstacle height R, each with its least-squares line through the
 # origin. Each quantity is scaled to share the axis; the slopes in the key are unscaled.
 # Usage: gnuplot -e "fmt='svg'; out='results/fig2.svg'" paper/figures/fig2.gp   (fmt: svg or png)
-if (fmt eq 'svg') { set terminal svg size 1000,430 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 1000,430 font 'Helvetica,11' }
+if (fmt eq 'svg') { set terminal svg size 1000,430 dynamic font 'Helvetica,14' } else { set terminal pngcairo size 1000,430 font 'Helvetica,11' }
 set output out
 set datafile separator ','
 # Top left, in headroom kept free above the lines (they all rise from the origin): the key covers no point.
-set key top left box opaque font ',10' samplen 2
+set key top left box opaque samplen 2
 set offsets 0, graph 0.04, graph 0.4, 0
 set xlabel 'obstacle height R'
 set ylabel 'scaled as in the key'

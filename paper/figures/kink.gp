@@ -3,14 +3,14 @@
 # kink carried (D31; filled marks), on three scenes the rim-contact series solves. Slopes h^3 and h^4
 # are dotted.
 # Usage: gnuplot -e "fmt='svg'; out='results/kink.svg'" paper/figures/kink.gp   (fmt: svg or png)
-if (fmt eq 'svg') { set terminal svg size 1000,430 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 1000,430 font 'Helvetica,11' }
+if (fmt eq 'svg') { set terminal svg size 1000,430 dynamic font 'Helvetica,14' } else { set terminal pngcairo size 1000,430 font 'Helvetica,11' }
 set output out
 set datafile separator ','
 set logscale xy
 set format y '10^{%L}'
 set xlabel 'h'
 set grid
-set key top left opaque box font ',11'
+set key top left opaque box
 data = 'results/kink.csv'
 pick(scene, space, col) = (strcol(1) eq scene && strcol(2) eq space && column(col) > 0) ? column(col) : NaN
 set multiplot layout 1,2

@@ -2,7 +2,7 @@
 # one eps on the paper's grid, the size of each step, the true distance to w_eps and the bound (D7)
 # step / (eps lambda_1h), against the iteration. The paper stops when the step falls below OS.
 # Usage: gnuplot -e "fmt='svg'; out='results/linear_history.svg'" paper/figures/linear_history.gp
-if (fmt eq 'svg') { set terminal svg size 900,500 dynamic font 'Helvetica,15' } else { set terminal pngcairo size 900,500 font 'Helvetica,12' }
+if (fmt eq 'svg') { set terminal svg size 900,500 dynamic font 'Helvetica,16' } else { set terminal pngcairo size 900,500 font 'Helvetica,12' }
 set encoding utf8
 set output out
 set datafile separator ','

@@ -3,7 +3,7 @@
 # code's edge rows (the spline of their multipliers, a function of the angle), and its nodal and
 # Gauss samplings binned by angle, each on its finest grid.
 # Usage: gnuplot -e "fmt='svg'; out='results/rim.svg'" paper/figures/rim.gp
-if (fmt eq 'svg') { set terminal svg size 900,520 dynamic font 'Helvetica,15' } else { set terminal pngcairo size 900,520 font 'Helvetica,12' }
+if (fmt eq 'svg') { set terminal svg size 900,500 dynamic font 'Helvetica,16' } else { set terminal pngcairo size 900,500 font 'Helvetica,12' }
 set output out
 set datafile separator ','
 set xlabel 'angle about the centre of the disk (0: towards the side x = 1)'

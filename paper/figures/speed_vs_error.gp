@@ -3,7 +3,7 @@
 # cells n per side, and the exact solver's line is the discretisation error alone. Right: each
 # obstacle solve's time as a multiple of one unconstrained factorisation and solve on its grid.
 # Usage: gnuplot -e "fmt='svg'; out='results/speed_vs_error.svg'" paper/figures/speed_vs_error.gp
-if (fmt eq 'svg') { set terminal svg size 1100,480 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 1100,480 font 'Helvetica,11' }
+if (fmt eq 'svg') { set terminal svg size 1100,480 dynamic font 'Helvetica,15' } else { set terminal pngcairo size 1100,480 font 'Helvetica,11' }
 set output out
 set datafile separator ','
 set grid
@@ -28,10 +28,10 @@ set format x '10^{%L}'
 set format y '10^{%L}'
 set xlabel 'solve time [s] (fine-grid assembly excluded)'
 set ylabel '|w_h(0.5,0.5) − max w of the continuum|'
-set key bottom left box opaque font ',10'
+set key bottom left box opaque 
 set title 'error against time'
 plot data using (sel('exact', '', 9)):(sel('exact', '', 14)) with linespoints pt 7 lw 2 lc 1 title 'exact constraint', \
-     data using (sel('exact', '', 9)):(sel('exact', '', 14)):2 with labels offset 0,1 font ',10' notitle, \
+     data using (sel('exact', '', 9)):(sel('exact', '', 14)):2 with labels offset 0,1  notitle, \
      data using (sel('nonlinear', '1e-06', 9)):(sel('nonlinear', '1e-06', 14)) with linespoints pt 5 lc 2 title 'scheme (3a), tol 1e-6', \
      data using (sel('nonlinear', '1e-08', 9)):(sel('nonlinear', '1e-08', 14)) with linespoints pt 4 lc 3 title t3a8, \
      data using (sel('linear', '1e-06', 9)):(sel('linear', '1e-06', 14)) with linespoints pt 9 lc 4 title t5a6, \
@@ -44,7 +44,7 @@ set offsets graph 0.04, graph 0.04, 0, 0  # the first and last grids off the fra
 set ylabel 'time / (one factorisation + solve)'
 # Room above the highest point for the key, so that it covers none.
 set yrange [1:1000]
-set key top right box opaque font ',10'
+set key top right box opaque 
 set title 'cost in factorisations'
 plot data using (sel('exact', '', 2)):(sel('exact', '', 10)) with linespoints pt 7 lw 2 lc 1 title 'exact constraint', \
      data using (sel('nonlinear', '1e-06', 2)):(sel('nonlinear', '1e-06', 10)) with linespoints pt 5 lc 2 title 'scheme (3a), tol 1e-6', \

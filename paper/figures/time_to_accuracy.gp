@@ -4,43 +4,52 @@
 # solver and sampling (n = 8, 16, ...; FreeFEM: 4, 8, ... cells per quarter circle).
 # Filled points: certified runs (exit 0); open points: runs that exit 3.
 # Usage: gnuplot -e "fmt='svg'; out='results/time_to_accuracy.svg'" paper/figures/time_to_accuracy.gp
-if (fmt eq 'svg') { set terminal svg size 1000,600 dynamic font 'Helvetica,13' } else { set terminal pngcairo size 1000,600 font 'Helvetica,11' }
+# Three panels a row, at most six lines each: this code's exact solver in each space and sampling;
+# the peers beside the exact nodal solve they match and the default; the paper's penalty schemes
+# beside the default. Max w above, the total force below. Each configuration keeps its colour,
+# its marker and its dash in every panel, so that the lines part in greyscale too.
+if (fmt eq 'svg') { set terminal svg size 1200,900 dynamic font 'Helvetica,16' } else { set terminal pngcairo size 1200,900 font 'Helvetica,11' }
 set output out
 set datafile separator ','
 set logscale xy
 set format y '10^{%L}'
 set format x '10^{%L}'
-set xlabel 'wall time of the whole process (s)'
-set ylabel 'relative error against the series'
 set grid
-# One key for both panels, drawn as a plot of its own in the strip below them.
-set tmargin at screen 0.93
-set bmargin at screen 0.36
-unset key
-# Twelve lines: the default list of colours has eight.
-set linetype 9 lc rgb '#8c564b' pt 5
-set linetype 10 lc rgb '#17becf' pt 5
-set linetype 11 lc rgb '#7f7f7f' pt 5
-set linetype 12 lc rgb '#bcbd22' pt 5
+set linetype 9 lc rgb '#8c564b'
+set linetype 10 lc rgb '#17becf'
+set linetype 11 lc rgb '#7f7f7f'
+set linetype 12 lc rgb '#bcbd22'
 data = 'results/time_to_accuracy.csv'
 stats data using 2 nooutput
 blocks = STATS_blocks
 # The configurations of src/programs/time_to_accuracy.cpp, in its order (the CSV has one block each).
-array names[12] = ["exact edge kink carried (default)", "exact edge plain", "exact edge points", "exact edge whole plate", "exact nodes", "exact Gauss", "(3a) edge", "(3a) Gauss (paper)", "(5a) Gauss (paper)", "SNESVI rsls nodes", "SNESVI ssls nodes", "FreeFEM HCT vertices"]
+array names[12] = ["default: edge, kink carried", "edge, plain", "edge points", "edge, whole plate", "nodes", "Gauss", "(3a) edge", "(3a) Gauss (paper)", "(5a) Gauss (paper)", "SNESVI rsls, nodes", "SNESVI ssls, nodes", "FreeFEM HCT"]
+array marker[12] = [7, 5, 9, 11, 13, 15, 4, 6, 8, 10, 12, 14]
+array dash[12] = [1, 2, 3, 4, 5, 1, 2, 3, 4, 2, 3, 4]
 ok(col) = (column(3) == 0 && column(col) > 0) ? column(col) : NaN
 bad(col) = (column(3) != 0 && column(col) > 0) ? column(col) : NaN
+# Which blocks (1-based configurations) each panel draws.
+panel1 = "1 2 3 4 5 6"
+panel2 = "1 5 10 11 12"
+panel3 = "1 7 8 9"
+array titles[3] = ["this code, exact", "peers on the same scene", "the paper's penalty schemes"]
 set multiplot
-do for [c in "8 9"] {
-  set origin (c eq "8" ? 0 : 0.5), 0
-  set size 0.5, 1
-  set title (c eq "8" ? 'max w' : 'total contact force')
-  plot for [b = 0:blocks - 1] data index b using 4:(ok(int(c))) with linespoints pt 7 lc b + 1 notitle, \
-       for [b = 0:blocks - 1] data index b using 4:(bad(int(c))) with points pt 6 lc b + 1 notitle
+# Open marks: runs that exit 3, not certified. The keys go in a strip of their own below the panels,
+# one under each column, where they cover no point.
+unset key
+do for [row = 0:1] {
+  col = (row == 0 ? 8 : 9)
+  do for [p = 1:3] {
+    list = (p == 1 ? panel1 : p == 2 ? panel2 : panel3)
+    set origin (p - 1) / 3.0, (row == 0 ? 0.58 : 0.17)
+    set size 1 / 3.0, 0.42
+    set title (row == 0 ? titles[p] : '')
+    set xlabel (row == 1 ? 'wall time (s)' : '')
+    set ylabel (p == 1 ? (row == 0 ? 'error in max w' : 'error in the force') : '')
+    plot for [k in list] data index (int(k) - 1) using 4:(ok(col)) with linespoints pt marker[int(k)] ps 0.9 dt dash[int(k)] lc int(k) notitle, \
+         for [k in list] data index (int(k) - 1) using 4:(bad(col)) with points pt 6 ps 0.9 lc int(k) notitle
+  }
 }
-set origin 0, 0
-set size 1, 0.26
-set tmargin 0
-set bmargin 0
 unset title
 unset xlabel
 unset ylabel
@@ -50,7 +59,13 @@ unset grid
 unset logscale
 set xrange [0:1]
 set yrange [0:1]
-set key center center horizontal maxcols 3 box font ',10'
-plot for [b = 0:blocks - 1] NaN with linespoints pt 7 lc b + 1 title names[b + 1], \
-     NaN with points pt 6 lc rgb '#444444' title 'open: run not certified (exit 3)'
+set key center top box samplen 2 spacing 0.9
+do for [p = 1:3] {
+  list = (p == 1 ? panel1 : p == 2 ? panel2 : panel3)
+  set origin (p - 1) / 3.0, 0
+  set size 1 / 3.0, 0.16
+  set tmargin 0
+  set bmargin 0
+  plot for [k in list] NaN with linespoints pt marker[int(k)] ps 0.9 dt dash[int(k)] lc int(k) title names[int(k)]
+}
 unset multiplot
