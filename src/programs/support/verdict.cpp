@@ -24,8 +24,8 @@ std::string verdict(const Extrapolation& e, const std::string& bar) {
   if (t < 2) return "too few grids" + fallback;
   if (!std::isfinite(e.orders[t - 1]) || !std::isfinite(e.orders[t - 2]))
     return "not steady: the last increments change sign or grow" + fallback;
-  return "not steady: the last two orders are " + format_order(e.orders[t - 2], e.order_noise[t - 2]) + " and " +
-         format_order(e.orders[t - 1], e.order_noise[t - 1]) + fallback;
+  // The orders stand in the table's column beside the verdict: the cell does not repeat them.
+  return "not steady" + fallback;
 }
 
 std::string bar_number(const Extrapolation& e, int digits) {
