@@ -5,7 +5,7 @@
 # Three panels side by side, the height of one: printed across the column (717 px at most), a
 # square figure would be held to the print style's 8 cm and shrink its labels below 7 pt. The key of
 # (a) is the caption's; (a) and (b) tick only 0, 1/2 and 1.
-if (fmt eq 'svg') { set terminal svg size 1300,480 dynamic font 'Helvetica,17' } else { set terminal pngcairo size 1300,480 font 'Helvetica,13' }
+if (fmt eq 'svg') { set terminal svg size 1300,480 dynamic font 'Helvetica,18' } else { set terminal pngcairo size 1300,480 font 'Helvetica,13' }
 set output out
 set multiplot
 

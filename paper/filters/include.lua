@@ -102,6 +102,10 @@ function Div(el)
       -- Nine columns or more of numbers fill a printed page at the reports' size: the style sheet
       -- sets them smaller in print, so that Chromium need not shrink every page to fit one table.
       if #t.colspecs >= 9 then t.attr.classes:insert("wide") end
+      -- A long table may run on to the next page; a short one is kept whole, with its caption.
+      local rows = 0
+      for _, body in ipairs(t.bodies) do rows = rows + #body.body end
+      if rows > 15 then t.attr.classes:insert("long") end
       return t
     end,
     -- A symbol the reports write in ASCII is set as mathematics; 6.25e-07 must not wrap after its
