@@ -31,7 +31,7 @@ plot data using 3:(pick(n, 4) * s1) with points pt 2 ps 1.3 lc 1 title sprintf('
      a1 * s1 * x with lines lc 1 notitle, \
      data using 3:(pick(n, 5) * s2) with points pt 6 ps 1.3 lc 2 title sprintf('2: max|m_{12}| × 10   slope %.6g', a2), \
      a2 * s2 * x with lines lc 2 notitle, \
-     data using 3:(pick(n, 6) * s3) with points pt 2 ps 1.3 lc 3 title sprintf('3: max|w| × 10^2   slope %.6g', a3), \
+     data using 3:(pick(n, 6) * s3) with points pt 8 ps 1.3 lc 3 title sprintf('3: max|w| × 10^2   slope %.6g', a3), \
      a3 * s3 * x with lines lc 3 notitle
 
 n = fine
@@ -46,7 +46,7 @@ plot data using 3:(pick(n, 4) * s1) with points pt 2 ps 1.3 lc 1 title sprintf('
      a1 * s1 * x with lines lc 1 notitle, \
      data using 3:(pick(n, 5) * s2) with points pt 6 ps 1.3 lc 2 title sprintf('2: max|m_{12}| × 10   slope %.6g', a2), \
      a2 * s2 * x with lines lc 2 notitle, \
-     data using 3:(pick(n, 6) * s3) with points pt 2 ps 1.3 lc 3 title sprintf('3: max|w| × 10^2   slope %.6g', a3), \
+     data using 3:(pick(n, 6) * s3) with points pt 8 ps 1.3 lc 3 title sprintf('3: max|w| × 10^2   slope %.6g', a3), \
      a3 * s3 * x with lines lc 3 notitle, \
      data using 3:(pick(n, 7) * s4) with points pt 4 ps 1.3 lc 4 title sprintf('total force × 10^{-1}   slope %.6g', a4), \
      a4 * s4 * x with lines lc 4 notitle
