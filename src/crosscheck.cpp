@@ -87,6 +87,8 @@ Agreement compare_limits(const Extrapolation& a, const Extrapolation& b) {
   Agreement g;
   g.difference = std::abs(a.limit - b.limit);
   g.tolerance = std::max(a.bar, a.bar_noise) + std::max(b.bar, b.bar_noise);
+  g.difference_noise = a.limit_noise + b.limit_noise;
+  g.tolerance_noise = a.bar_noise + b.bar_noise;
   g.agree = g.difference <= g.tolerance;
   g.steady = a.steady && b.steady;
   return g;

@@ -62,6 +62,8 @@ double uniform_load_centre_ours(int n);
 // it. Two codes agree when their limits differ by at most the sum of the two bars.
 struct Agreement {
   double difference = 0, tolerance = 0;
+  // What round-off can move in each, by the two limits' noise models: digits below them are not printed.
+  double difference_noise = 0, tolerance_noise = 0;
   bool agree = false;
   bool steady = false;  // both bars come from steady orders
 };

@@ -444,6 +444,14 @@ std::string eps_csv(const Setup& s, const EpsPart& part) {
   return ecsv.str();
 }
 
+// A difference, a tolerance and a tolerance over the value, each printed to the digits its round-off
+// leaves (a digit below that differs from machine to machine, and from one FreeFEM build to the next).
+std::string difference_text(const Agreement& a) { return fmt_above(a.difference, a.difference_noise, 2); }
+std::string tolerance_text(const Agreement& a) { return fmt_above(a.tolerance, a.tolerance_noise, 2); }
+std::string relative_text(const Agreement& a, double value) {
+  return fmt_above(a.tolerance / std::abs(value), a.tolerance_noise / std::abs(value), 2);
+}
+
 // The comparison itself, a row per eps and quantity: what the document quotes and check-results reads.
 std::string limits_csv(const EpsPart& part) {
   std::ostringstream csv;
@@ -465,8 +473,7 @@ std::string limits_csv(const EpsPart& part) {
           << fmt_above(ff.limit, ff.limit_noise, 10, 'g') << "," << fmt_above(ff.bar, ff.bar_noise, 2) << ","
           << ff.steady << "," << order(ff) << "," << fmt_above(us.limit, us.limit_noise, 10, 'g') << ","
           << fmt_above(us.bar, us.bar_noise, 2) << "," << us.steady << "," << order(us) << ","
-          << fmt("%.1e", a.difference) << "," << fmt("%.1e", a.tolerance) << ","
-          << fmt("%.1e", a.tolerance / std::abs(us.limit)) << "," << a.agree << "\n";
+          << difference_text(a) << "," << tolerance_text(a) << "," << relative_text(a, us.limit) << "," << a.agree << "\n";
     }
   return csv.str();
 }
@@ -539,9 +546,9 @@ std::string eps_md(const Setup& s, const EpsPart& part) {
         "|---:|---|---|---|---:|---:|\n";
   for (const EpsComparison& c : comparisons) {
     md << "| " << fmt("%g", c.eps) << " | max w | " << brief(c.ff_w) << " | " << brief(c.our_w) << " | "
-       << fmt("%.1e", c.w.difference) << (c.w.agree ? "" : " **DIFFER**") << " | " << fmt("%.1e", c.w.tolerance) << " |\n";
+       << difference_text(c.w) << (c.w.agree ? "" : " **DIFFER**") << " | " << tolerance_text(c.w) << " |\n";
     md << "| " << fmt("%g", c.eps) << " | force | " << brief(c.ff_f) << " | " << brief(c.our_f) << " | "
-       << fmt("%.1e", c.f.difference) << (c.f.agree ? "" : " **DIFFER**") << " | " << fmt("%.1e", c.f.tolerance) << " |\n";
+       << difference_text(c.f) << (c.f.agree ? "" : " **DIFFER**") << " | " << tolerance_text(c.f) << " |\n";
   }
   int steady = 0;  // the caption says how the cells were made, as they were
   for (const EpsComparison& c : comparisons)
@@ -560,16 +567,19 @@ std::string eps_md(const Setup& s, const EpsPart& part) {
   // changes w_eps and the force by the same d. So a row resolves a change of the scene of its
   // tolerance over its value, and no smaller.
   double worst_w = 0, worst_f = 0, best_w = INFINITY;
+  std::string worst_w_text, worst_f_text, best_w_text;
   for (const EpsComparison& c : comparisons) {
     const double rw = c.w.tolerance / std::abs(c.our_w.limit), rf = c.f.tolerance / std::abs(c.our_f.limit);
-    worst_w = std::max(worst_w, rw), worst_f = std::max(worst_f, rf), best_w = std::min(best_w, rw);
+    if (rw > worst_w) worst_w = rw, worst_w_text = relative_text(c.w, c.our_w.limit);
+    if (rf > worst_f) worst_f = rf, worst_f_text = relative_text(c.f, c.our_f.limit);
+    if (rw < best_w) best_w = rw, best_w_text = relative_text(c.w, c.our_w.limit);
   }
   md << "\nResolution: with no load, (2) is positively homogeneous in the obstacle and w, so changing the obstacle's "
         "height by a relative d changes max w and the force by the same d; a row therefore detects any change of the "
         "scene larger than its tolerance over its value. Over these eps that is "
-     << (fmt("%.1e", best_w) == fmt("%.1e", worst_w) ? fmt("%.1e", worst_w) : fmt("%.1e", best_w) + " to " + fmt("%.1e", worst_w))
+     << (best_w_text == worst_w_text ? worst_w_text : best_w_text + " to " + worst_w_text)
      << " for max w (target 1e-7: " << (worst_w <= 1e-7 ? "met" : "NOT met") << ") and at most "
-     << fmt("%.1e", worst_f) << " for the force (target 1e-6: " << (worst_f <= 1e-6 ? "met" : "NOT met") << ").\n";
+     << worst_f_text << " for the force (target 1e-6: " << (worst_f <= 1e-6 ? "met" : "NOT met") << ").\n";
   return md.str();
 }
 
