@@ -82,14 +82,16 @@ std::vector<double> values_at(const std::vector<CheckValues>& runs, int point) {
 }
 
 // @region agreement
-// Two limits agree within the sum of their error bars, each at least what round-off can move.
+// Two limits agree within the sum of their error bars, each at least what round-off can move. A
+// difference within ten times the limits' round-off (where fmt_above stops printing digits) is not
+// resolved, and is no evidence that they differ: a rebuild can move it that far.
 Agreement compare_limits(const Extrapolation& a, const Extrapolation& b) {
   Agreement g;
   g.difference = std::abs(a.limit - b.limit);
   g.tolerance = std::max(a.bar, a.bar_noise) + std::max(b.bar, b.bar_noise);
   g.difference_noise = a.limit_noise + b.limit_noise;
   g.tolerance_noise = a.bar_noise + b.bar_noise;
-  g.agree = g.difference <= g.tolerance;
+  g.agree = g.difference <= g.tolerance || g.difference < 10 * g.difference_noise;
   g.steady = a.steady && b.steady;
   return g;
 }

@@ -398,6 +398,30 @@ TEST(Paper, PartIPrintsOnTenPagesWithTheCodeOfBothSchemes) {
   }
 }
 
+// A listing folded on screen opens when the page is printed (paper/print.html): paper has no click.
+// The probe is the edge rows' listing, folded in Part II because it is long.
+TEST(Paper, AFoldedListingOpensInPrint) {
+  const std::string html = slurp(kRoot / "results/paper.html");
+  const size_t details = html.find("<details><summary>The code of the edge rows");
+  ASSERT_NE(details, std::string::npos) << "the edge rows' listing is not folded on screen, so it proves nothing here";
+  std::string line;
+  for (const std::string& l : region_lines(kRoot / "src/sampling.cpp", "edge-sampling"))
+    if (l.find("//") == std::string::npos && l.size() > 20) { line = l; break; }
+  ASSERT_FALSE(line.empty());
+  const std::string words = line.substr(0, line.find('('));
+  const fs::path pdf = fs::temp_directory_path() / ("main-text-" + std::to_string(::getpid()) + ".pdf");
+  const fs::path text = pdf.string() + ".txt";
+  const std::string command = "cd '" + kRoot.string() + "' && PAGE_COUNT_KEEP='" + pdf.string() +
+                              "' scripts/page_count.sh results/paper.html >/dev/null 2>&1 && pdftotext -raw '" +
+                              pdf.string() + "' '" + text.string() + "'";
+  const int rc = std::system(command.c_str());
+  const std::string printed = fs::exists(text) ? slurp(text) : "";
+  fs::remove(pdf);
+  fs::remove(text);
+  ASSERT_EQ(rc, 0) << "printing the main text failed";
+  EXPECT_NE(printed.find(words), std::string::npos) << "the folded listing is not on the printed page: " << words;
+}
+
 // Every figure is readable at the size it prints: the smallest font its gnuplot script sets, scaled
 // as Chromium scales the drawing to fit the page, is at least 7 pt. A gnuplot SVG has no size of its
 // own (a viewBox only), so it fills the column (A4 less Chromium's margins of 0.4 in: 717 CSS px)

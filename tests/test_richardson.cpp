@@ -68,3 +68,17 @@ TEST(Agreement, LimitsAgreeWithinTheSumOfTheirBarsAndNoCloser) {
   EXPECT_TRUE(g.agree);
   EXPECT_FALSE(g.steady);
 }
+
+// A difference that round-off can make (within ten times the limits' noise, below the digits that
+// are printed) is not a disagreement; one beyond both the bars and that is.
+TEST(Agreement, ADifferenceWithinRoundOffIsNotADisagreement) {
+  Extrapolation a, b;
+  a.limit = 1.0, a.bar = 1e-9, a.limit_noise = 1e-9, a.steady = true;
+  b.limit = 1.0 + 5e-9, b.bar = 1e-12, b.limit_noise = 1e-12, b.steady = true;
+  Agreement g = compare_limits(a, b);
+  EXPECT_GT(g.difference, g.tolerance);
+  EXPECT_TRUE(g.agree);
+  EXPECT_NEAR(g.difference_noise, 1e-9 + 1e-12, 1e-24);
+  b.limit = 1.0 + 2e-8;  // beyond ten times the noise and beyond the bars
+  EXPECT_FALSE(compare_limits(a, b).agree);
+}

@@ -24,7 +24,8 @@ stats data using 2 nooutput
 blocks = STATS_blocks
 # The configurations of src/programs/time_to_accuracy.cpp, in its order (the CSV has one block each).
 array names[12] = ["default: edge, kink carried", "edge, plain", "edge points", "edge, whole plate", "nodes", "Gauss", "(3a) edge", "(3a) Gauss (paper)", "(5a) Gauss (paper)", "SNESVI rsls, nodes", "SNESVI ssls, nodes", "FreeFEM HCT"]
-array marker[12] = [7, 5, 9, 11, 13, 15, 4, 6, 8, 10, 12, 14]
+# Filled marks only (open ones are the runs that exit 3), distinct within each panel.
+array marker[12] = [7, 5, 9, 11, 13, 15, 5, 9, 11, 5, 9, 11]
 array dash[12] = [1, 2, 3, 4, 5, 1, 2, 3, 4, 2, 3, 4]
 ok(col) = (column(3) == 0 && column(col) > 0) ? column(col) : NaN
 bad(col) = (column(3) != 0 && column(col) > 0) ? column(col) : NaN

@@ -54,8 +54,11 @@ function CodeBlock(el)
                              {class = lines <= 15 and "listing short" or "listing"})
   -- On screen a long listing stays out of the way, closed under its fold line; a short one is
   -- read where it stands.
-  if lines <= kFoldLines then return listing end
   local fold = el.attributes["fold"]
+  if lines <= kFoldLines then
+    if fold then error("code.lua: region " .. name .. " has " .. lines .. " lines and is never folded: drop its fold=") end
+    return listing
+  end
   if not fold then error("code.lua: region " .. name .. " has " .. lines .. " lines and no fold=\"...\" line to open it") end
   return pandoc.Div({
     pandoc.RawBlock("html", "<details><summary>" .. fold .. " (" .. lines .. " lines)</summary>"),

@@ -59,7 +59,7 @@ local function as_math(s)
 end
 
 -- The blocks under the heading named `name` (to the next heading of its level or above), and the
--- blocks outside it, heading included.
+-- blocks outside that section. The heading itself is in neither: the including document names it.
 local function split_section(blocks, name, path)
   local inside, outside, level, done = pandoc.List(), pandoc.List(), nil, false
   for _, b in ipairs(blocks) do
