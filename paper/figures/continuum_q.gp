@@ -27,5 +27,7 @@ set logscale y
 set format y '10^{%L}'
 set yrange [1e-9:1e2]
 set key top center horizontal maxcols 5 box opaque
-plot for [n in '32 64 128 256 512'] data using 3:(is('edge', n + 0, 6)) with lines lw 1.5 title 'n = '.n
+# A dash per grid, so that the lines part in greyscale too.
+grids = '32 64 128 256 512'
+plot for [k = 1:words(grids)] data using 3:(is('edge', word(grids, k) + 0, 6)) with lines lw 1.5 dt k title 'n = '.word(grids, k)
 unset multiplot

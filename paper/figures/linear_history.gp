@@ -15,5 +15,5 @@ set grid
 set key bottom left box opaque  # the lower left is empty: every curve falls to the right
 data = 'results/linear_history.csv'
 plot data using 1:2 with lines lw 2 lc rgb '#1f4e8c' title 'step |w^n − w^{n−1}|', \
-     data using 1:3 with lines lw 2 lc rgb '#c0392b' title 'true error |w^n − w^{ε}|', \
+     data using 1:3 with lines lw 2 dt 4 lc rgb '#c0392b' title 'true error |w^n − w^{ε}|', \
      data using 1:4 with lines lw 2 dt 2 lc rgb '#2e8b57' title 'bound (D7): step / (ε λ_{1h})'

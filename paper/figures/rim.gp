@@ -16,6 +16,6 @@ set key inside top center horizontal maxcols 2 box opaque
 data = 'results/crosscheck_rim.csv'
 sel(s) = (strcol(1) eq s) ? column(4) : NaN
 plot data using 3:(sel('bfs-nodes')) with histeps lw 1.5 lc rgb '#2e8b57' title 'nodes, binned', \
-     data using 3:(sel('bfs-gauss')) with histeps lw 1.5 lc rgb '#8e44ad' title 'Gauss, binned', \
+     data using 3:(sel('bfs-gauss')) with histeps lw 1.5 dt 2 lc rgb '#8e44ad' title 'Gauss, binned', \
      data using 3:(sel('bfs-edge')) with lines lw 2 lc rgb '#1f4e8c' title 'edge rows (spline)', \
      data using 3:(sel('freefem-hct')) with points pt 6 ps 0.9 lc rgb '#c0392b' title 'FreeFEM, circle vertices'
