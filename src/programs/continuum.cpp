@@ -369,7 +369,7 @@ int main(int argc, char** argv) {
   app.add_option("--finest", finest, "cells on the finest grid")->check(CLI::Range(8, 2048))->capture_default_str();
   app.footer(kExitStatusHelp);
   if (const int status = parse_options(app, argc, argv, "continuum"); status >= 0) return status;
-  try {
+  return run_guarded("continuum", [&] {
     if (finest < 4 * coarsest) throw std::invalid_argument("--finest must be at least 4 times --coarsest (three grids)");
     const auto pub = read_paper_numbers(numbers);
     const Scene scene = paper_scene();
@@ -404,11 +404,5 @@ int main(int argc, char** argv) {
     for (const Row& r : s.rows)
       if (!r.certified) return kNotConverged;
     return kSuccess;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "continuum: bad input: " << e.what() << "\n";
-    return kBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "continuum: error: " << e.what() << "\n";
-    return kFailure;
-  }
+  });
 }

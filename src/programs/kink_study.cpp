@@ -197,7 +197,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.footer(kExitStatusHelp);
   if (const int status = parse_options(app, argc, argv, "kink_study"); status >= 0) return status;
-  try {
+  return run_guarded("kink_study", [&] {
     const std::vector<SceneCase> cases = {
         {"The paper's scene", "paper", paper_scene(), 16},
         {"The cylinder at (0.45, 0.5)", "off-centre", cylinder_scene(1, 1, Cylinder{0.45, 0.5, 0.25, 0.0625}), 16},
@@ -220,11 +220,5 @@ int main(int argc, char** argv) {
     for (const Row& r : rows)
       if (!r.certified) return kNotConverged;
     return kSuccess;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "kink_study: bad input: " << e.what() << "\n";
-    return kBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "kink_study: error: " << e.what() << "\n";
-    return kFailure;
-  }
+  });
 }

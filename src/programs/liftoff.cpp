@@ -183,7 +183,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(2, 64))
       ->capture_default_str();
   if (const int status = parse_options(app, argc, argv, "liftoff"); status >= 0) return status;
-  try {
+  return run_guarded("liftoff", [&] {
     for (const char* f : {"/liftoff.md", "/liftoff.csv", "/liftoff_timings.csv"}) check_output_file("--out", out + f);
     std::filesystem::create_directories(work);
     Progress progress("liftoff", false);
@@ -227,11 +227,5 @@ int main(int argc, char** argv) {
       return kNotConverged;
     }
     return kSuccess;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "liftoff: bad input: " << e.what() << "\n";
-    return kBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "liftoff: error: " << e.what() << "\n";
-    return kFailure;
-  }
+  });
 }

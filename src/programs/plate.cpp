@@ -644,16 +644,10 @@ int main(int argc, char** argv) {
   // CLI11 has its own exit codes; every bad input exits with the one documented in --help.
   if (const int status = parse_options(app, argc, argv, "plate"); status >= 0) return status;
   const auto t0 = Clock::now();
-  try {
+  return run_guarded("plate", [&] {
     if (o.scheme == "semi-analytic") return solve_semi_analytic(app, o, t0);
     Run r = check(o);
     echo(app, o, r);
     return solve_and_write(o, r, t0);
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "plate: bad input: " << e.what() << "\n";
-    return kBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "plate: error: " << e.what() << "\n";
-    return kFailure;
-  }
+  });
 }

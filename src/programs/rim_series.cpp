@@ -121,7 +121,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.footer(kExitStatusHelp);
   if (const int status = parse_options(app, argc, argv, "rim_series"); status >= 0) return status;
-  try {
+  return run_guarded("rim_series", [&] {
     if (finest & (finest - 1)) throw std::invalid_argument("--finest must be 16 times a power of two (16, 32, ...)");
     const RimAnswer a = rim_answer(paper_scene(), levels);
     write_file_atomically(out + "/rim_series.csv", table_csv(a));
@@ -133,11 +133,5 @@ int main(int argc, char** argv) {
       return kNotConverged;
     }
     return kSuccess;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "rim_series: bad input: " << e.what() << "\n";
-    return kBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "rim_series: error: " << e.what() << "\n";
-    return kFailure;
-  }
+  });
 }

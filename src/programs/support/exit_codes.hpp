@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <stdexcept>
 
 namespace plate {
 
@@ -30,6 +31,22 @@ inline int parse_options(CLI::App& app, int argc, char** argv, const char* progr
     return kBadInput;
   }
   return -1;
+}
+
+// A program's work after parse_options, with the table above: an input it cannot use
+// (std::invalid_argument) exits kBadInput, any other exception kFailure, each with one line that
+// names the program, so that no failure leaves as a crash.
+template <class Body>
+int run_guarded(const char* program, Body body) {
+  try {
+    return body();
+  } catch (const std::invalid_argument& e) {
+    std::cerr << program << ": bad input: " << e.what() << "\n";
+    return kBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << program << ": error: " << e.what() << "\n";
+    return kFailure;
+  }
 }
 
 }  // namespace plate
