@@ -577,7 +577,7 @@ std::string eps_md(const Setup& s, const EpsPart& part) {
     if (rf > worst_f) worst_f = rf, worst_f_text = relative_text(c.f, c.our_f.limit);
     // The lower end is the smallest bound the rows print: a row below round-off claims its bound.
     const std::string tw = relative_text(c.w, c.our_w.limit);
-    const double printed = std::stod(tw.rfind("< ", 0) == 0 ? tw.substr(2) : tw);
+    const double printed = std::stod(without_bound(tw));
     if (printed < best_w) best_w = printed, best_w_text = tw;
   }
   md << "\nResolution: with no load, (2) is positively homogeneous in the obstacle and w, so changing the obstacle's "

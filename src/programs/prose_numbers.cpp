@@ -160,8 +160,7 @@ void crosscheck_penalty_numbers(Numbers& num, const std::string& results) {
     num.put("crosscheck_penalty." + q + "_relative_first", t.text(rows.front(), "relative"), src + " first " + q + " row: relative");
     // A relative below round-off is printed as its bound, "< 2e-08": the bound is what it can claim.
     auto relative = [&](std::size_t r) {
-      const std::string text = t.text(r, "relative");
-      return parse_number(text.rfind("< ", 0) == 0 ? text.substr(2) : text, src + ": relative");
+      return parse_number(without_bound(t.text(r, "relative")), src + ": relative");
     };
     Range rel;
     std::string worst;

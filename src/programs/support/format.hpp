@@ -50,4 +50,8 @@ inline std::string fmt_above(double v, double noise, int max_digits, char style 
   return fmt(f.c_str(), v);
 }
 // @end fmt-above
+// The number in what fmt_above printed: the value, or for "< b" the bound b that it claims.
+inline std::string without_bound(const std::string& printed) {
+  return printed.rfind("< ", 0) == 0 ? printed.substr(2) : printed;
+}
 }  // namespace plate

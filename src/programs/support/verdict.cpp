@@ -30,7 +30,7 @@ std::string verdict(const Extrapolation& e, const std::string& bar) {
 
 std::string bar_number(const Extrapolation& e, int digits) {
   const std::string b = fmt_above(e.bar, e.bar_noise, digits);
-  return b[0] == '<' ? b.substr(2) : b;
+  return without_bound(b);
 }
 
 bool bar_is_roundoff(const Extrapolation& e) { return fmt_above(e.bar, e.bar_noise, 2)[0] == '<'; }
