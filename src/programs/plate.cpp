@@ -398,13 +398,15 @@ LevelAnswer level_answer(const plate::Problem& p, const plate::ExactResult& x, c
   a.cells = p.grid.whole_nx();
   a.enriched = p.kink.has_value();
   a.certified = x.converged;
-  a.max_w = extremum_of_w(p, x.w, +1).value;
-  a.min_w = extremum_of_w(p, x.w, -1).value;
   a.force = (1 << (int(p.grid.mirror_x) + int(p.grid.mirror_y))) * p.sampling.weights.dot(x.lambda);
+  // The field's extremes, m12 and the user's points, as the report of the finest grid measures them.
   Report scratch;
+  scratch.points = r.report.points;
   measure(scratch, p, x.w, r.nu);
+  a.max_w = scratch.max_w.value;
+  a.min_w = scratch.min_w.value;
   a.m12 = scratch.max_abs_m12.value;
-  for (const auto& [px, py] : r.report.points) a.at_points.push_back(evaluate(p, x.w, px, py).w);
+  a.at_points = scratch.w_at_points;
   return a;
 }
 
