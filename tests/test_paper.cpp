@@ -363,38 +363,50 @@ std::vector<std::string> region_lines(const fs::path& file, const std::string& n
   return out;
 }
 
-// Part I, the paper reproduced, prints on at most ten pages of Chromium's default size, with the
-// code of both schemes on the page: a reader of the printed copy must find (3a) and (5a) there,
-// although on screen a long listing may be folded.
-TEST(Paper, PartIPrintsOnTenPagesWithTheCodeOfBothSchemes) {
-  const fs::path pdf = fs::temp_directory_path() / ("part-i-" + std::to_string(::getpid()) + ".pdf");
-  const std::string command = "cd '" + kRoot.string() + "' && PAGE_COUNT_KEEP='" + pdf.string() +
-                              "' scripts/page_count.sh --part-i results/paper.html 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  char buffer[512] = {0};
-  const std::string out = fgets(buffer, sizeof buffer, pipe) ? buffer : "";
-  ASSERT_EQ(pclose(pipe), 0) << "scripts/page_count.sh failed: " << out;
-  const int pages = std::atoi(out.c_str());
-  std::cout << "Part I: " << pages << " printed pages\n";
-  EXPECT_GE(pages, 5);
-  EXPECT_LE(pages, 10);
+// The words of a region's first line of code that is not a comment, up to its bracket, as the
+// source has it: a signature, not a number, so that neither a rebuild nor a typed copy can match it.
+std::string first_code_words(const fs::path& file, const std::string& region) {
+  for (const std::string& l : region_lines(file, region))
+    if (l.find("//") == std::string::npos && l.size() > 20) return l.substr(0, l.find('('));
+  return "";
+}
 
+struct Printed {
+  int pages = 0;     // as scripts/page_count.sh counts them; 0 if printing failed
+  std::string text;  // pdftotext of that print
+  std::string error;
+};
+// Prints the start of results/paper.html as scripts/page_count.sh does (`mode`: "" for the main
+// text, "--part-i" for Part I) and reads the PDF's text; the PDF and the text are removed after.
+Printed print_document(const std::string& mode) {
+  const fs::path pdf = fs::temp_directory_path() / ("paper-print-" + std::to_string(::getpid()) + ".pdf");
   const fs::path text = pdf.string() + ".txt";
-  const int rc = std::system(("pdftotext -raw '" + pdf.string() + "' '" + text.string() + "'").c_str());
-  const std::string printed = slurp(text);
+  Printed p;
+  const std::string command = "cd '" + kRoot.string() + "' && PAGE_COUNT_KEEP='" + pdf.string() +
+                              "' scripts/page_count.sh " + mode + " results/paper.html 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  char buffer[512] = {0};
+  const std::string out = pipe && fgets(buffer, sizeof buffer, pipe) ? buffer : "";
+  if (!pipe || pclose(pipe) != 0) p.error = "scripts/page_count.sh failed: " + out;
+  else if (std::system(("pdftotext -raw '" + pdf.string() + "' '" + text.string() + "'").c_str()) != 0) p.error = "pdftotext failed";
+  else p.pages = std::atoi(out.c_str()), p.text = slurp(text);
   fs::remove(pdf);
   fs::remove(text);
-  ASSERT_EQ(rc, 0) << "pdftotext failed";
+  return p;
+}
+
+// Part I, the paper reproduced, prints on at most ten pages of Chromium's default size, with the
+// code of both schemes on the page: a reader of the printed copy must find (3a) and (5a) there.
+TEST(Paper, PartIPrintsOnTenPagesWithTheCodeOfBothSchemes) {
+  const Printed part = print_document("--part-i");
+  ASSERT_TRUE(part.error.empty()) << part.error;
+  std::cout << "Part I: " << part.pages << " printed pages\n";
+  EXPECT_GE(part.pages, 5);
+  EXPECT_LE(part.pages, 10);
   for (const char* scheme : {"nonlinear-scheme", "linear-scheme"}) {
-    // The first line of code that is not a comment, as the source has it: a signature, not a
-    // number, so that neither a rebuild nor a typed copy can satisfy it.
-    std::string line;
-    for (const std::string& l : region_lines(kRoot / "src/schemes.cpp", scheme))
-      if (l.find("//") == std::string::npos && l.size() > 20) { line = l; break; }
-    ASSERT_FALSE(line.empty()) << "no code line in region " << scheme;
-    const std::string words = line.substr(0, line.find('('));
-    EXPECT_NE(printed.find(words), std::string::npos) << "the printed Part I lacks the code of " << scheme << ": " << words;
+    const std::string words = first_code_words(kRoot / "src/schemes.cpp", scheme);
+    ASSERT_FALSE(words.empty()) << "no code line in region " << scheme;
+    EXPECT_NE(part.text.find(words), std::string::npos) << "the printed Part I lacks the code of " << scheme << ": " << words;
   }
 }
 
@@ -402,24 +414,13 @@ TEST(Paper, PartIPrintsOnTenPagesWithTheCodeOfBothSchemes) {
 // The probe is the edge rows' listing, folded in Part II because it is long.
 TEST(Paper, AFoldedListingOpensInPrint) {
   const std::string html = slurp(kRoot / "results/paper.html");
-  const size_t details = html.find("<details><summary>The code of the edge rows");
-  ASSERT_NE(details, std::string::npos) << "the edge rows' listing is not folded on screen, so it proves nothing here";
-  std::string line;
-  for (const std::string& l : region_lines(kRoot / "src/sampling.cpp", "edge-sampling"))
-    if (l.find("//") == std::string::npos && l.size() > 20) { line = l; break; }
-  ASSERT_FALSE(line.empty());
-  const std::string words = line.substr(0, line.find('('));
-  const fs::path pdf = fs::temp_directory_path() / ("main-text-" + std::to_string(::getpid()) + ".pdf");
-  const fs::path text = pdf.string() + ".txt";
-  const std::string command = "cd '" + kRoot.string() + "' && PAGE_COUNT_KEEP='" + pdf.string() +
-                              "' scripts/page_count.sh results/paper.html >/dev/null 2>&1 && pdftotext -raw '" +
-                              pdf.string() + "' '" + text.string() + "'";
-  const int rc = std::system(command.c_str());
-  const std::string printed = fs::exists(text) ? slurp(text) : "";
-  fs::remove(pdf);
-  fs::remove(text);
-  ASSERT_EQ(rc, 0) << "printing the main text failed";
-  EXPECT_NE(printed.find(words), std::string::npos) << "the folded listing is not on the printed page: " << words;
+  ASSERT_NE(html.find("<details><summary>The code of the edge rows"), std::string::npos)
+      << "the edge rows' listing is not folded on screen, so it proves nothing here";
+  const std::string words = first_code_words(kRoot / "src/sampling.cpp", "edge-sampling");
+  ASSERT_FALSE(words.empty());
+  const Printed main_text = print_document("");
+  ASSERT_TRUE(main_text.error.empty()) << main_text.error;
+  EXPECT_NE(main_text.text.find(words), std::string::npos) << "the folded listing is not on the printed page: " << words;
 }
 
 // Every figure is readable at the size it prints: the smallest font its gnuplot script sets, scaled
