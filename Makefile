@@ -4,7 +4,7 @@ BUILD ?= build
 JOBS  ?= $(shell getconf _NPROCESSORS_ONLN 2>/dev/null || echo 2)
 DRIVERS := $(BUILD)/table $(BUILD)/fig1 $(BUILD)/fig2 $(BUILD)/contraction $(BUILD)/hard_cases $(BUILD)/bench $(BUILD)/peer_snesvi \
            $(BUILD)/micro_bench $(BUILD)/continuum $(BUILD)/time_to_accuracy $(BUILD)/prose_numbers $(BUILD)/compare_tables $(BUILD)/rim_series \
-           $(BUILD)/liftoff $(BUILD)/kink_study
+           $(BUILD)/liftoff $(BUILD)/kink_study $(BUILD)/render_report
 TESTS := $(BUILD)/unit_tests $(BUILD)/fine_tests $(BUILD)/program_tests $(BUILD)/freefem_tests $(BUILD)/document_tests
 BINS  := $(BUILD)/plate $(BUILD)/crosscheck $(BUILD)/crosscheck_penalty $(TESTS) $(DRIVERS)
 PAPER_NUMBERS := reference/paper_numbers.csv
@@ -38,7 +38,7 @@ BENCH     := results/speed_vs_error.csv results/speed_vs_error.md
 TTA       := results/time_to_accuracy.csv results/time_to_accuracy.md
 BENCH_ALL := $(BENCH) results/speed_vs_error.svg results/speed_vs_error.png results/micro_benchmarks.md \
              $(TTA) results/time_to_accuracy.svg results/time_to_accuracy.png
-PAPER_INPUTS := paper/paper.md paper/style.css paper/print.html $(wildcard paper/filters/*.lua) $(wildcard src/*.cpp src/*.hpp src/programs/*.cpp src/programs/support/*.cpp src/programs/support/*.hpp) \
+PAPER_INPUTS := paper/paper.md paper/style.css paper/print.html $(wildcard paper/filters/*.lua) reports/words.md $(BUILD)/render_report $(wildcard src/*.cpp src/*.hpp src/programs/*.cpp src/programs/support/*.cpp src/programs/support/*.hpp) \
                 $(RESULTS) $(RIM_SERIES) $(CONTINUUM) $(LIFTOFF) $(KINK) $(OWN_SCENES) $(CROSSCHECK) $(RIM_FIGURE) $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) $(TABLE_FIGURE) $(HARD_CASES) $(BENCH_ALL) $(NUMBERS)
 # The packages whose versions the document's reference list gives.
 VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread libmuparser-dev libcli11-dev freefem++ gmsh \
@@ -198,7 +198,7 @@ paper: results/paper.html ## the literate document: results/paper.html (self-con
 
 # A fresh clone's programs are newer than the results it carries, so `make paper` would remake
 # them all (about 25 minutes). This renders the document from the results as they are.
-document: $(BUILD)/prose_numbers results/versions.csv | deps ## results/paper.html from the results/ present, remaking none of them (10 s)
+document: $(BUILD)/prose_numbers $(BUILD)/render_report results/versions.csv | deps ## results/paper.html from the results/ present, remaking none of them (10 s)
 	$(BUILD)/prose_numbers --out results
 	$(render_paper)
 
@@ -215,7 +215,7 @@ $(NUMBERS) &: $(BUILD)/prose_numbers $(RESULTS) $(RIM_SERIES) $(CONTINUUM_DATA) 
 	$(BUILD)/prose_numbers --out results
 
 define render_paper
-	pandoc paper/paper.md --from markdown --to html5 --standalone --self-contained --mathml \
+	RENDER_REPORT=$(BUILD)/render_report pandoc paper/paper.md --from markdown --to html5 --standalone --self-contained --mathml \
 	  --lua-filter paper/filters/numbers.lua \
 	  --lua-filter paper/filters/equations.lua --lua-filter paper/filters/code.lua \
 	  --lua-filter paper/filters/include.lua --lua-filter paper/filters/numbering.lua --css paper/style.css --include-after-body paper/print.html --resource-path . \

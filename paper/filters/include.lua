@@ -1,4 +1,4 @@
--- Generated tables are spliced in from results/ when the document is built:
+-- Generated tables are spliced in from results/ when the document is built, with their words put in:
 --   ::: {include="results/table.md"}
 --   :::
 -- becomes the Markdown of that file, its headings moved two levels down so that they sit under
@@ -81,8 +81,11 @@ function Div(el)
   if not path then return nil end
   local f = io.open(path, "r")
   if not f then error("include.lua: cannot open " .. path .. " (run make results first)") end
-  local text = f:read("a")
   f:close()
+  -- The report's captions and standing sentences are markers; build/render_report puts in their
+  -- words from reports/words.md (one place, which a terminal reader's render_report also reads). An
+  -- unknown entry stops the build.
+  local text = pandoc.pipe(os.getenv("RENDER_REPORT") or "build/render_report", {path}, "")
   -- Without smart punctuation: a report that says "--scheme nonlinear" must keep its two dashes.
   local blocks = pandoc.read(text, "markdown-smart").blocks
   local section, except = el.attributes["section"], el.attributes["except"]

@@ -1,0 +1,38 @@
+// render_report: a report from results/ with its words put in (reports/words.md), printed to
+// standard output. The document's include filter calls it on every report it splices in; a reader
+// at a terminal calls it the same way: build/render_report results/liftoff.md | less
+#include <CLI/CLI.hpp>
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "exit_codes.hpp"
+#include "words.hpp"
+
+using namespace plate;
+
+int main(int argc, char** argv) {
+  CLI::App app{"render_report: print reports from results/ with their captions and standing sentences put in\n"
+               "from the words file (reports/words.md)."};
+  std::string words_path = "reports/words.md";
+  std::vector<std::string> reports;
+  app.add_option("--words", words_path, "the words file")->check(CLI::ExistingFile)->capture_default_str();
+  app.add_option("reports", reports, "report files (Markdown) to print")->required()->check(CLI::ExistingFile);
+  app.footer(kExitStatusHelp);
+  if (const int status = parse_options(app, argc, argv, "render_report"); status >= 0) return status;
+  return run_guarded("render_report", [&] {
+    const Words words(words_path);
+    for (const std::string& path : reports) {
+      std::ifstream in(path);
+      std::stringstream text;
+      text << in.rdbuf();
+      try {
+        std::cout << words.render(text.str());
+      } catch (const std::runtime_error& e) {
+        throw std::invalid_argument(path + ": " + e.what());
+      }
+    }
+    return kSuccess;
+  });
+}
