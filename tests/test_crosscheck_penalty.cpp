@@ -14,6 +14,7 @@
 #include "exit_codes.hpp"
 #include "run_program.hpp"
 #include "scratch.hpp"
+#include "words.hpp"
 
 using namespace plate;
 
@@ -39,7 +40,7 @@ Outcome fixed_eps(const std::string& tag, const std::string& perturb) {
   std::ifstream in(out + "/crosscheck_penalty.md");
   std::stringstream ss;
   ss << in.rdbuf();
-  o.report = ss.str();
+  o.report = Words(PLATE_SOURCE_DIR "/reports/words.md").render(ss.str());  // the report as a reader reads it
   return o;
 }
 }  // namespace

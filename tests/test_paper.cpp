@@ -19,6 +19,9 @@
 #include <unistd.h>
 
 #include "published.hpp"
+#include "run_program.hpp"
+#include "scratch.hpp"
+#include "words.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -484,4 +487,49 @@ TEST(Paper, EveryFigureHasAPlainAltText) {
     EXPECT_GE(alt.size(), 20u) << "alt text too short to say anything: " << alt;
   }
   EXPECT_GE(images, 9);
+}
+
+// The reports' words (reports/words.md, src/programs/support/words.hpp): every marker a report in
+// results/ holds has its entry, with the values that entry needs; and every entry is named by a
+// program, so that no caption is left behind when the code that wrote it goes.
+TEST(Reports, EveryMarkerHasItsWordsAndEveryEntryIsWrittenByAProgram) {
+  const plate::Words w((kRoot / "reports/words.md").string());
+  int markers = 0;
+  for (const auto& e : fs::directory_iterator(kRoot / "results")) {
+    if (e.path().extension() != ".md") continue;
+    const std::string raw = slurp(e.path());
+    markers += static_cast<int>(matches(raw, std::regex(R"(<!--words ([A-Za-z0-9_.\-]+))")).size());
+    std::string text;
+    EXPECT_NO_THROW(text = w.render(raw)) << e.path();
+    EXPECT_EQ(text.find("<!--words"), std::string::npos) << e.path() << ": a marker that does not parse";
+  }
+  EXPECT_GT(markers, 30);  // the reports do hold markers: the loop above had something to check
+  const std::string src = all_sources();
+  for (const auto& [key, text] : w.entries())
+    EXPECT_NE(src.find("\"" + key + "\""), std::string::npos) << key << " is in reports/words.md, and no program writes it";
+}
+
+// Mending a caption is a change to reports/words.md alone: render_report, which the document's
+// include filter calls, shows the new words from the report as it stands, and no result depends on
+// the words file in the Makefile, so no program reruns.
+TEST(Reports, ACaptionIsMendedWithoutRerunningItsProgram) {
+  const plate::Scratch scratch("mend_caption");
+  std::string words = slurp(kRoot / "reports/words.md");
+  const std::string old = "Theorem 2 measured.", mended = "Theorem 2, measured again.";
+  ASSERT_NE(words.find(old), std::string::npos);
+  words.replace(words.find(old), old.size(), mended);
+  std::ofstream(scratch.path("words.md")) << words;
+  const fs::path report = kRoot / "results/contraction.md";
+  const auto written = fs::last_write_time(report);
+  const plate::Captured r = plate::run_captured("'" BUILD_DIR "/render_report' --words '" + scratch.path("words.md") + "' '" +
+                                                report.string() + "'");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("Table: " + mended), std::string::npos) << r.output;
+  EXPECT_EQ(fs::last_write_time(report), written);
+  // In the Makefile the words file is an input of the document only.
+  std::istringstream makefile(slurp(kRoot / "Makefile"));
+  for (std::string line; std::getline(makefile, line);) {
+    if (line.find("reports/words.md") == std::string::npos) continue;
+    EXPECT_EQ(line.rfind("PAPER_INPUTS :=", 0), 0u) << "a Makefile rule other than the document's names the words file: " << line;
+  }
 }

@@ -28,6 +28,7 @@
 #include "published.hpp"
 #include "schemes.hpp"
 #include "stopwatch.hpp"
+#include "words.hpp"
 
 using namespace plate;
 
@@ -267,10 +268,7 @@ void exact_table(std::ostream& md, const ByN& exact_at, const ByN& baseline_at, 
        << fmt("%.0f", ev.at("correction_solves")) << " | " << fmt("%.0f", e->peak_mib) << " | "
        << fmt("%.1e", ev.at("certificate")) << " | " << fmt("%.7f", ev.at("w_centre")) << " |\n";
   }
-  md << "\nTable: Our exact solver against one unconstrained factorisation and solve of the same grid (the "
-        "baseline: analysis, factorisation and solve). Read the ratio, the price of the contact, and the certificate, "
-        "a bound on the distance from the discrete answer. PDAS iterations are those of the finest grid; "
-        "factorisations and correction solves count every grid of the sequence.\n";
+  md << "\nTable: " << words("bench.exact_caption") << "\n";
 }
 
 void penalty_table(std::ostream& md, const std::vector<Outcome>& outcomes, const ByN& exact_at, const ByN& baseline_at) {
@@ -290,9 +288,7 @@ void penalty_table(std::ostream& md, const std::vector<Outcome>& outcomes, const
        << (b != baseline_at.end() ? fmt("%.1f", r.v.at("seconds") / baseline_seconds(*b->second)) : "") << " | "
        << (e != exact_at.end() ? fmt("%.1e", max_diff(r.nodal, e->second->nodal)) : "") << " |\n";
   }
-  md << "\nTable: The paper's penalty schemes on the same grids (nodal sampling). Read the last column, the largest "
-        "nodal distance from the exact discrete solution, beside the time; a run marked no stopped before its "
-        "tolerance.\n";
+  md << "\nTable: " << words("bench.penalty_caption") << "\n";
 }
 
 // The peers: PETSc's SNESVI on the identical discrete problem, against our exact solver.
@@ -321,8 +317,7 @@ void peers_table(std::ostream& md, const std::vector<Outcome>& outcomes, const B
        << fmt("%.1e", r.v.at("certificate")) << " | "
        << (e != exact_at.end() ? fmt("%.1e", max_diff(r.nodal, e->second->nodal)) : "") << " |\n";
   }
-  md << "\nTable: PETSc's SNESVI on the identical discrete problem. Read the certificate and the nodal difference "
-        "first, whether the peer found the same answer, then the time against ours.\n";
+  md << "\nTable: " << words("bench.peers_caption") << "\n";
 }
 
 // Target (issue 42): at n = 256 and 512, at least 3 times faster than the fastest certified SNESVI

@@ -21,6 +21,7 @@
 #include "roundoff.hpp"
 #include "verdict.hpp"
 #include "stopwatch.hpp"
+#include "words.hpp"
 
 using namespace plate;
 
@@ -243,13 +244,9 @@ std::string markdown(const Study& s) {
       for (const Quantity* q : shown) o << " | " << (std::isfinite(r.*q->field) ? num(r, *q) : "n/a");
       o << " |\n";
     }
-    o << "\nTable: " << sampling_title(k) << ", every grid (n cells a side; samples: the points or splines that carry the "
-         "constraint). Every run is certified unless marked. Read down a column: the digits that stop changing are "
-         "the answer.\n\n";
+    o << "\nTable: " << words("continuum.sampling_caption", {{"sampling", sampling_title(k)}}) << "\n\n";
   }
-  o << "**Against the rim-contact series.** Each row's relative distance from the series' answer (`rim_series.md`): max w, "
-       "the total force and, for edge sampling, the line load at every edge point (its largest distance from the series' "
-       "q at the same angle, over the mean load); the order is log2 of the ratio of successive errors.\n\n"
+  o << words("continuum.series_intro") << "\n\n"
        "| sampling | n | max w | order | total force | order | line load, pointwise | order |\n"
        "|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const std::string& k : s.kinds) {
@@ -265,14 +262,8 @@ std::string markdown(const Study& s) {
       before = &r;
     }
   }
-  o << "\nTable: Each grid's relative distance from the rim-contact series, and the order at which it shrinks "
-       "from the grid before: a steady order is what makes a Richardson limit trustworthy.\n\n";
-  o << "**Observed orders and limits.** The order from three successive grids is log2 of the ratio of their "
-       "increments; it exists where the increments keep one sign and shrink. Where the last two orders differ by "
-       "at most " << fmt("%g", kSteadySpread) << " the order is called steady, and the Richardson limit from the last three grids is given with "
-       "an error bar: its distance to the limit the three grids before give. Elsewhere no extrapolation is trusted: "
-       "the finest value is given with its last increment as the error bar, which bounds its error only if the "
-       "increments beyond the finest grid at least halve each time.\n\n"
+  o << "\nTable: " << words("continuum.series_caption") << "\n\n";
+  o << words("continuum.orders_intro", {{"spread", fmt("%g", kSteadySpread)}}) << "\n\n"
     << "| quantity | sampling | orders (coarse to fine) | verdict |\n|---|---|---|---|\n";
   for (const Quantity& q : kQuantities)
     for (const std::string& k : s.kinds) {
@@ -282,8 +273,7 @@ std::string markdown(const Study& s) {
       for (size_t i = 0; i < e.orders.size(); ++i) o << (i ? ", " : "") << format_order(e.orders[i], e.order_noise[i]);
       o << " | " << verdict(e) << " |\n";
     }
-  o << "\nTable: The observed orders of every quantity and sampling, and what they allow: a limit with its bar "
-       "where the order is steady, the finest value with its last increment elsewhere.\n";
+  o << "\nTable: " << words("continuum.orders_caption") << "\n";
   return o.str();
 }
 

@@ -18,6 +18,7 @@
 #include "norms.hpp"
 #include "published.hpp"
 #include "schemes.hpp"
+#include "words.hpp"
 
 using namespace plate;
 
@@ -116,9 +117,7 @@ int main(int argc, char** argv) {
               << fmt("%.9f", q * q) << ',' << fmt("%.9f", energy) << ',' << fmt("%.9f", rho) << '\n';
         }
       }
-    md << "\nTable: Theorem 2 measured. Compare the factor measured with no contact with $q$, the rate the theorem "
-          "gives; with the paper's obstacle, the slowest factor with $q$ and with the paper's $\\rho$, and the energy "
-          "ratio with $q^2$.\n";
+    md << "\nTable: " << words("contraction.caption") << "\n";
     {
       std::cerr << "contraction: the linear scheme's history on the paper's grid\n";
       const int n = paper_cells();  // the paper's h = 1/4

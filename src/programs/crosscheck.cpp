@@ -22,6 +22,7 @@
 #include "published.hpp"
 #include "rim_report.hpp"
 #include "verdict.hpp"
+#include "words.hpp"
 
 using namespace plate;
 
@@ -220,7 +221,7 @@ void runs_table(std::ostream& md, const Runs& runs, const std::vector<const std:
       if (line_load) md << " | " << num(r, r.mean_line) << " | " << num(r, r.q0) << " | " << num(r, r.q45);
       md << " |\n";
     }
-  md << "\nTable: " << caption << " Every run is certified unless marked.\n";
+  md << "\nTable: " << caption << "\n";
 }
 
 void describe(std::ostream& md, const Setup& u, const Runs& runs) {
@@ -249,9 +250,7 @@ void describe(std::ostream& md, const Setup& u, const Runs& runs) {
         "of the refinement's last correction (D22), u n^3 relative for an unrefined solve, u the unit round-off, see `exact_solve_roundoff`; "
      << kFreefemRoundoffRule << " for FreeFEM).\n\n";
   runs_table(md, runs, {&runs.ff, &runs.edge}, true,
-             "The paper's square, every grid of both codes: FreeFEM's HCT with the constraint at the vertices, on "
-             "meshes named by their cells along each quarter of the contact circle, and BFS, this code, with edge "
-             "sampling on n by n squares. Read down each column: the digits that stop changing are the answer.");
+             words("crosscheck.square_runs_caption"));
 }
 
 // A limit and its bar as printed: to the digits round-off leaves alone, and never below it. The
@@ -316,13 +315,9 @@ bool square_verdict(std::ostream& md, std::ostream& agreement, const Setup& u, c
               << ',' << fmt_up(g.difference) << ',' << fmt_up(g.tolerance) << ',' << fmt_up(relative) << ','
               << (q.target > 0 ? (met ? "1" : "0") : "") << ',' << (g.agree ? 1 : 0) << '\n';
   }
-  md << "\nTable: The two codes' limits side by side. Read the difference against the tolerance, the sum of "
-        "the two bars: the codes agree where the difference is the smaller. Limits are printed to the digits "
-        "round-off leaves them (Appendix B of the document, \"Digits that round-off decides\"); differences are "
-        "taken before rounding.\n";
-  md << "\n**" << (all_agree && all_certified ? "The two codes agree" : "The codes DO NOT agree")
-     << "** on every quantity within the tolerance their own convergence justifies"
-     << (all_certified ? "" : "; some runs are not certified") << (*targets_met ? ", at or under the targets.\n" : ".\n");
+  md << "\nTable: " << words("crosscheck.limits_caption") << "\n";
+  md << "\n" << words(all_agree && all_certified ? "crosscheck.square_agree" : "crosscheck.square_disagree")
+     << (all_certified ? "" : words("crosscheck.some_uncertified")) << (*targets_met ? words("crosscheck.at_targets") : ".") << "\n";
   return all_agree && all_certified;
 }
 
@@ -362,11 +357,8 @@ bool against_series(std::ostream& md, const Setup& u, const Runs& runs) {
     }
     md << " |\n";
   }
-  md << "\nTable: Each code's limit minus the rim-contact series' answer, judged against the limit's own bar plus "
-        "the series' bar.\n";
-  md << "\n**" << (all ? "Both codes' limits hold the series' answer within their bars."
-                       : "A limit misses the series' answer by more than its bar: that bar underestimates its error.")
-     << "**\n";
+  md << "\nTable: " << words("crosscheck.series_caption") << "\n";
+  md << "\n" << words(all ? "crosscheck.series_hold" : "crosscheck.series_miss") << "\n";
   // The line load point by point: no limit is taken, each grid's q against the series' q.
   md << "\nThe line load point by point, on each grid: the largest distance of its q from the series' q, over the "
         "mean load (ours: the spline at 720 angles and its knots; FreeFEM: each circle vertex's force over its arc).\n\n"
@@ -380,8 +372,7 @@ bool against_series(std::ostream& md, const Setup& u, const Runs& runs) {
       before = e;
     }
   }
-  md << "\nTable: The line load on each grid against the series' line load, point by point: the largest "
-        "distance over the mean load, and the order at which it shrinks.\n";
+  md << "\nTable: " << words("crosscheck.line_load_caption") << "\n";
   return all;
 }
 
@@ -393,10 +384,9 @@ void record(std::ostream& md, const Setup& u, const Runs& runs) {
         "grid differently and the values do not converge at a steady order; they are kept as the record of what "
         "does not converge cleanly.\n\n";
   runs_table(md, runs, {&runs.gauss, &runs.nodes}, false,
-             "This code with the paper's two samplings, every grid: compare the digits that settle with those of "
-             "the edge sampling above.");
+             words("crosscheck.record_runs_caption"));
   convergence(md, u, runs, {&runs.gauss, &runs.nodes},
-              "The observed orders of the two samplings: where they wander, no Richardson limit is taken.");
+              words("crosscheck.record_orders_caption"));
 }
 
 // The disk on a flat punch: FreeFEM against the closed form (D23)-(D25). True if every run is
@@ -421,8 +411,7 @@ bool disk_verdict(std::ostream& md, const Setup& u, const Runs& runs) {
        << " | " << fmt_above(r.w_at[0] - w0, noise_w(r, 1), 2) << " | " << num(r, r.force) << " | "
        << fmt_above(r.force - force, noise(r, force), 2) << " |\n";
   }
-  md << "\nTable: FreeFEM on the disk and punch, every mesh, against the closed form. Every run is certified unless "
-        "marked.\n";
+  md << "\nTable: " << words("crosscheck.disk_runs_caption") << "\n";
   const Quantity qs[] = {{"w(0)", "", [](const CheckValues& r) { return r.w_at.at(0); }},
                          {"total force", "", [](const CheckValues& r) { return r.force; }}};
   const double exact[] = {w0, force};
@@ -439,10 +428,8 @@ bool disk_verdict(std::ostream& md, const Setup& u, const Runs& runs) {
     md << " | " << limit_text(e) << " | " << fmt("%.12g", exact[k]) << " | " << fmt_up(difference) << " | "
        << (ok ? "yes" : "**NO**") << " |\n";
   }
-  md << "\nTable: FreeFEM's Richardson limits on the disk against the closed form: the difference must lie within "
-        "the limit's bar.\n";
-  md << "\n**" << (within && certified ? "FreeFEM reproduces the closed form" : "FreeFEM DOES NOT reproduce the closed form")
-     << "** within the error bar of its own Richardson limit.\n";
+  md << "\nTable: " << words("crosscheck.disk_limits_caption") << "\n";
+  md << "\n" << words(within && certified ? "crosscheck.disk_reproduced" : "crosscheck.disk_not_reproduced") << "\n";
   return within && certified;
 }
 
@@ -458,12 +445,13 @@ bool uniform_load(std::ostream& md, const Setup& u, const Runs& runs) {
   for (size_t i = 0; i < runs.our_uniform.size(); ++i)
     md << "| BFS | " << runs.gauss[i].grid << " | " << fmt("%.8f", runs.our_uniform[i]) << " | "
        << fmt("%+.1e", runs.our_uniform[i] - published) << " |\n";
-  md << "\nTable: The clamped square under uniform load, both codes against the published centre deflection.\n";
+  md << "\nTable: " << words("crosscheck.uniform_caption") << "\n";
   // The error of a value that converges at least linearly is at most its last increment.
   const bool ok = std::abs(runs.ff_uniform.back() - published) <= last_increment(runs.ff_uniform) + 5e-9 &&
                   std::abs(runs.our_uniform.back() - published) <= last_increment(runs.our_uniform) + 5e-9;
-  md << "\nBoth finest values are within their last increment, plus the published value's rounding (5e-9), of "
-     << published << ": " << (ok ? "yes" : "**NO**") << ".\n";
+  std::ostringstream value;
+  value << published;
+  md << "\n" << words(ok ? "crosscheck.uniform_within" : "crosscheck.uniform_not_within", {{"published", value.str()}}) << "\n";
   return ok;
 }
 
@@ -520,8 +508,7 @@ int main(int argc, char** argv) {
           "where the last two differ by at most "
        << fmt("%g", kSteadySpread) << " it is called steady (richardson.hpp).\n";
     convergence(md, u, runs, {&runs.ff, &runs.edge},
-                "Each code's observed orders, coarse to fine, and the limit they allow with its bar: a bar is "
-                "trusted where the last two orders agree.");
+                words("crosscheck.square_orders_caption"));
     bool targets_met = false;
     std::ostringstream agreement;
     const bool agreed = square_verdict(md, agreement, u, runs, &targets_met);

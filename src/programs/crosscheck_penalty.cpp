@@ -39,6 +39,7 @@
 #include "published.hpp"
 #include "richardson.hpp"
 #include "verdict.hpp"
+#include "words.hpp"
 
 using namespace plate;
 
@@ -518,9 +519,7 @@ std::string table_md(const Setup& s, const TablePart& part, const CsvTable& ours
     for (int c : t.freefem) md << " " << (c < 0 ? std::string("not converged") : std::to_string(c)) << " |";
     md << "\n";
   }
-  md << "\nTable: The paper's iteration counts of (5a) for each tolerance OS beside four discretisations of the "
-        "same scene: ours with nodal and Gauss sampling on h = 1/4, FreeFEM's penalty script on the two coarsest "
-        "meshes (cells per quarter circle). Read along a row; the next table says why the counts need not agree.\n";
+  md << "\nTable: " << words("crosscheck_penalty.table_caption") << "\n";
   md << "\n| discretisation | $h$ | lambda_1h | measured factor | 1/(1 + eps lambda_1h) |\n|---|---:|---:|---:|---:|\n";
   for (const char* sampling : {"nodes", "gauss"}) {
     const size_t r = our_row(sampling);
@@ -532,12 +531,8 @@ std::string table_md(const Setup& s, const TablePart& part, const CsvTable& ours
     md << "| FreeFEM, " << 4 * e.level << " cells per quarter circle | " << fmt("%.3f", e.h) << " | " << fmt("%.4f", e.lambda1h) << " | "
        << fmt_above(e.measured, kMeasuredNoise, 10, 'g') << " | " << fmt("%.7f", e.q) << (e.ok ? "" : " (differs)") << " |\n";
   md << "| continuum (Bjørstad and Tjøstheim 1999) | 0 | " << fmt("%.4f", lambda1) << " | — | — |\n";
-  md << "\nTable: Why the counts differ: (5a) with no contact, eps = " << fmt("%g", kEigenEps) << ", contracts by "
-        "1/(1 + eps lambda_1h), and each discretisation has its own smallest eigenvalue lambda_1h. Compare the "
-        "measured factor with that rate in each row.\n\n";
-  md << "The counts are shown, not judged: no two discretisations share lambda_1h, and the counts follow it. What is "
-        "judged is the rate itself: with no contact, (5a)'s slowest mode must contract by 1/(1 + eps lambda_1h) "
-        "with FreeFEM's own lambda_1h, to " << fmt("%g", kEigenTol) << ".\n\n";
+  md << "\nTable: " << words("crosscheck_penalty.eigen_caption", {{"eps", fmt("%g", kEigenEps)}}) << "\n\n";
+  md << words("crosscheck_penalty.eigen_judged", {{"tol", fmt("%g", kEigenTol)}}) << "\n\n";
   return md.str();
 }
 
@@ -556,16 +551,12 @@ std::string eps_md(const Setup& s, const EpsPart& part) {
   int steady = 0;  // the caption says how the cells were made, as they were
   for (const EpsComparison& c : comparisons)
     for (const Extrapolation* e : {&c.ff_w, &c.ff_f, &c.our_w, &c.our_f}) steady += e->steady;
-  md << "\nTable: The penalised problem at fixed eps, solved by both codes and refined to its limit, the penalty "
-        "integrated over the true disk (D30): FreeFEM on "
-     << 4 * s.eps_levels.front() << " to " << 4 * s.eps_levels.back()
-     << " cells per quarter circle, over the triangles inside the circle and the segments beyond their chords; this "
-        "code on h = 1/" << s.eps_ns.front() << " to 1/" << s.eps_ns.back()
-     << " by the rule that follows the circle and the curve w = phi through each square. "
-     << (steady == 0 ? "No observed order is steady here, so each cell is the finest value and its last increment"
-                     : "Each cell is a Richardson limit and its bar where the observed order is steady (the order then "
-                       "follows in brackets), else the finest value and its last increment")
-     << "; the tolerance is the sum of the two bars, and the codes agree in every row not marked as differing.\n";
+  md << "\nTable: "
+     << words("crosscheck_penalty.eps_caption", {{"cells_first", std::to_string(4 * s.eps_levels.front())},
+                                                 {"cells_last", std::to_string(4 * s.eps_levels.back())},
+                                                 {"n_first", std::to_string(s.eps_ns.front())},
+                                                 {"n_last", std::to_string(s.eps_ns.back())}})
+     << " " << words(steady == 0 ? "crosscheck_penalty.eps_cells_unsteady" : "crosscheck_penalty.eps_cells_steady") << "\n";
   // With f = 0, (2) is positively homogeneous in (phi, w): a relative change d of the obstacle's height
   // changes w_eps and the force by the same d. So a row resolves a change of the scene of its
   // tolerance over its value, and no smaller.
@@ -580,12 +571,13 @@ std::string eps_md(const Setup& s, const EpsPart& part) {
     const double printed = std::stod(without_bound(tw));
     if (printed < best_w) best_w = printed, best_w_text = tw;
   }
-  md << "\nResolution: with no load, (2) is positively homogeneous in the obstacle and w, so changing the obstacle's "
-        "height by a relative d changes max w and the force by the same d; a row therefore detects any change of the "
-        "scene larger than its tolerance over its value. Over these eps that is "
-     << (best_w_text == worst_w_text ? worst_w_text : best_w_text + " to " + worst_w_text)
-     << " for max w (target 1e-7: " << (worst_w <= 1e-7 ? "met" : "NOT met") << ") and at most "
-     << worst_f_text << " for the force (target 1e-6: " << (worst_f <= 1e-6 ? "met" : "NOT met") << ").\n";
+  md << "\n"
+     << words("crosscheck_penalty.resolution",
+              {{"w_range", best_w_text == worst_w_text ? worst_w_text : best_w_text + " to " + worst_w_text},
+               {"w_target", worst_w <= 1e-7 ? "met" : "NOT met"},
+               {"f_worst", worst_f_text},
+               {"f_target", worst_f <= 1e-6 ? "met" : "NOT met"}})
+     << "\n";
   return md.str();
 }
 
@@ -601,13 +593,9 @@ std::string rate_md(const Setup& s, const EpsPart& part) {
     md << "| " << fmt("%g", s.rate_eps[k]) << " | " << fmt_above(rate[k][0], rate_noise[0], 3) << " | "
        << fmt_above(rate[k][1], rate_noise[1], 3) << " | " << fmt_above(rate[k][2], rate_noise[2], 3) << " | "
        << fmt_above(rate[k][3], rate_noise[3], 3) << " |\n";
-  md << "\nTable: How fast the penalty's answer approaches the exact one ($F$ the total force): each code against "
-        "its own exact answer with the same discrete constraint, FreeFEM on "
-     << 4 * s.rate_level << " cells per quarter circle with the penalty at the vertices (contact_hct.edp's constraint), "
-        "this code on h = 1/" << s.rate_n << " with nodal sampling (its exact solver's constraint). Over the last two "
-        "decades of eps, once the contact sets agree, each decade divides every difference by 10 "
-     << (rate_ok ? "to within 1: an error of order eps." : "NOT to within 1.")
-     << "\n\n";
+  md << "\nTable: "
+     << words("crosscheck_penalty.rate_caption", {{"cells", std::to_string(4 * s.rate_level)}, {"n", std::to_string(s.rate_n)}})
+     << " " << words(rate_ok ? "crosscheck_penalty.rate_met" : "crosscheck_penalty.rate_not_met") << "\n\n";
   return md.str();
 }
 
@@ -623,20 +611,24 @@ std::string fig2_md(const Setup& s, const Fig2Part& part) {
     md << "| " << fmt("%g", f.R) << " | " << fmt("%.6f", f.ff_w) << " | " << fmt("%.6f", f.our_w) << " | "
        << fmt("%.5f", f.ff_m12) << " | " << fmt("%.5f", f.our_m12) << " | " << fmt("%.4f", f.ff_force) << " | "
        << fmt("%.4f", f.our_force) << " |\n";
-  md << "\nTable: The paper's Fig. 2 from both codes: FreeFEM on the mesh with " << 4 * s.fig2_level
-     << " cells per quarter circle, this code at h = 1/" << our_n << " (nodal sampling, results/fig2.csv); eps = "
-     << fmt("%g", s.fig2_eps) << ", scheme (3a), nu = 0.3. Read each pair of columns; the paragraph below judges their "
-        "difference at the paper's R against the meshes' own increments.\n";
-  md << "\nAt the paper's R = " << fmt("%g", s.scene.cylinder->height) << ", FreeFEM as above against ours at h = 1/" << mesh_n
-     << " (results/fig2_mesh.csv): max w differs by " << fmt("%.2e", fig2_w_diff)
-     << " (relative), within the codes' last mesh increments summed, " << fmt("%.2e", fig2_w_tol)
-     << (fig2_w_diff <= fig2_w_tol ? "" : " : NOT within") << "; the force by " << fmt("%.2e", fig2_f_diff) << ", against "
-     << fmt("%.2e", fig2_f_tol) << (fig2_f_diff <= fig2_f_tol ? "" : " : NOT within")
-     << ". FreeFEM's three quantities divided by R " << (fig2_linearity <= kLinearity ? "agree" : "DO NOT agree")
-     << " over the " << fig2.size() << " heights to " << fmt("%g", kLinearity) << " (relative): linear in R. max |m12| is taken at the contact circle, where second derivatives jump across "
-        "element edges and each code takes its own value there (FreeFEM the largest over the triangles at a vertex, "
-        "ours the mean over the elements at a node): shown, not judged; the nodal maximum of the force density grows "
-        "as the grid is refined (the force concentrates on the circle) and is not compared.\n";
+  md << "\nTable: "
+     << words("crosscheck_penalty.fig2_caption",
+              {{"cells", std::to_string(4 * s.fig2_level)}, {"n", std::to_string(our_n)}, {"eps", fmt("%g", s.fig2_eps)}})
+     << "\n";
+  md << "\n"
+     << words("crosscheck_penalty.fig2_judged",
+              {{"R", fmt("%g", s.scene.cylinder->height)},
+               {"n", std::to_string(mesh_n)},
+               {"w_diff", fmt("%.2e", fig2_w_diff)},
+               {"w_tol", fmt("%.2e", fig2_w_tol)},
+               {"w_missed", fig2_w_diff <= fig2_w_tol ? "" : " : NOT within"},
+               {"f_diff", fmt("%.2e", fig2_f_diff)},
+               {"f_tol", fmt("%.2e", fig2_f_tol)},
+               {"f_missed", fig2_f_diff <= fig2_f_tol ? "" : " : NOT within"},
+               {"linear", fig2_linearity <= kLinearity ? "agree" : "DO NOT agree"},
+               {"heights", std::to_string(fig2.size())},
+               {"linearity", fmt("%g", kLinearity)}})
+     << "\n";
   return md.str();
 }
 
@@ -724,7 +716,7 @@ int main(int argc, char** argv) {
     if (wanted("eps")) md += eps_md(s, eps);
     if (wanted("rate")) md += rate_md(s, eps);
     if (wanted("fig2")) md += fig2_md(s, fig2);
-    md += std::string("\n") + (all_ok ? "Verdict: every check agrees." : "Verdict: some checks FAIL (above).") + "\n";
+    md += "\n" + words(all_ok ? "crosscheck_penalty.verdict_agree" : "crosscheck_penalty.verdict_fail") + "\n";
     if (wanted("table")) write_file_atomically(s.out + "/crosscheck_penalty_table.csv", table_csv(s, table));
     if (wanted("eps")) write_file_atomically(s.out + "/crosscheck_penalty_eps.csv", eps_csv(s, eps));
     if (wanted("eps")) write_file_atomically(s.out + "/crosscheck_penalty_limits.csv", limits_csv(eps));

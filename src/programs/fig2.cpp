@@ -16,6 +16,7 @@
 #include "eps_limit.hpp"
 #include "published.hpp"
 #include "schemes.hpp"
+#include "words.hpp"
 
 using namespace plate;
 
@@ -77,9 +78,9 @@ std::string mesh_markdown(const std::vector<Point>& pts, double R) {
     md << "| 1/" << p.n << " | " << to_string(p.kind) << " | " << fmt("%.5g", p.max_xi) << " | "
        << fmt("%.5g", p.max_xi / p.n) << " | " << fmt("%.5g", p.max_m12) << " | " << fmt("%.6f", p.max_w) << " | "
        << fmt("%.5g", p.force) << " | " << fmt("%.5g", p.force_per_length) << " |\n";
-  md << "\nTable: The paper's scene (R = " << R << ") on finer and finer grids. Read down the columns: the nodal "
-        "maximum of the force density, and even $h\\max\\xi$, keep growing as $h$ shrinks, while $\\max w$ and the "
-        "total force settle; the force is carried by the contact circle, not spread over an area.\n";
+  std::ostringstream r;
+  r << R;
+  md << "\nTable: " << words("fig2.mesh_caption", {{"R", r.str()}}) << "\n";
   return md.str();
 }
 
@@ -141,9 +142,7 @@ int main(int argc, char** argv) {
          << "# f = 0, exact discrete penalised solution at eps = " << eps << " by the nonlinear scheme (3a), nu = " << nu << ".\n";
     write_file_atomically(out + "/fig2.csv", head.str() + kColumns + csv_rows(sweep));
     write_file_atomically(out + "/fig2_mesh.csv", head.str() + kColumns + csv_rows(study));
-    fit << "\nTable: The lines of the paper's Fig. 2: each quantity fitted by a line through the origin in $R$. The last column "
-           "is the largest distance of a point from its line over the largest value: a value at round-off means the "
-           "quantity is proportional to $R$.\n";
+    fit << "\nTable: " << words("fig2.fit_caption") << "\n";
     write_file_atomically(out + "/fig2_fit.md", fit.str());
     write_file_atomically(out + "/fig2_mesh.md", mesh_markdown(study, R_paper));
   } catch (const std::exception& e) {

@@ -23,6 +23,7 @@
 #include "run_program.hpp"
 #include "scenes.hpp"
 #include "stopwatch.hpp"
+#include "words.hpp"
 
 using namespace plate;
 
@@ -74,11 +75,7 @@ void eps_sweep(std::ostream& md, const Problem& p, const VectorXd& reference, co
                 (s == Scheme::Linear ? "(5a) " : "(3a) ") +
                 (smallest_certified > 0 ? fmt("%.0e", smallest_certified) : std::string("none"));
   }
-  md << "\nTable: " << caption << " The last error column is the penalised answer's distance from the "
-        "reference, which shrinks with eps: it is shown, not judged. Predicted iterations are Theorem 2's, for (5a) "
-        "only. Why not: round-off, eps^-1 (w - phi) cannot be evaluated to tol; stalled, the steps fell below "
-        "tol while the error bound stayed above it, so the iterate is not w_eps; levelled off, the steps stopped "
-        "shrinking a thousand iterations apart; iteration cap, the runs' limit was reached.\n\n"
+  md << "\nTable: " << caption << " " << words("hard_cases.sweep_caption_tail") << "\n\n"
      << smallest << ".\n\n";
 }
 
@@ -104,8 +101,7 @@ void bad_input(std::ostream& md, const std::string& plate, const std::string& ca
     md << "| `plate " << table_cell(c.args) << "` | " << r.status << " (" << c.status << ")"
        << (ok ? "" : " **unexpected**") << " | " << table_cell(r.output) << " |\n";
   }
-  md << "\nTable: Each bad input given to `plate`, the exit status it got (the one expected in brackets), and "
-        "the message it printed.\n";
+  md << "\nTable: " << words("hard_cases.bad_input_caption") << "\n";
   md << "\n" << as_expected << " of " << n << " cases behave as expected (status, a message naming the input, and an "
      << "output file only for status 3, where it says it did not converge).\n\n";
 }
@@ -127,16 +123,14 @@ void small_eps(std::ostream& md, const Context& c) {
     const Problem p = make_problem(c.scene, make_grid(16), SamplingSpec{SamplingKind::Nodes});
     const ExactResult exact = solve_exact(p, ExactOptions{});
     eps_sweep(md, p, exact.w, "exact", 1e-8, 20000, c.lambda1,
-              "h = 1/16, nodal sampling, each eps against the exact-constraint solution (certificate " +
-                  fmt("%.1e", exact.certificate.worst()) + ").");
+              words("hard_cases.sweep_exact_caption", {{"certificate", fmt("%.1e", exact.certificate.worst())}}));
   }
   for (int n : {16, 4}) {  // 4: the paper's own grid
     const Problem p = make_problem(c.scene, make_grid(n), SamplingSpec{SamplingKind::Gauss});
     const EpsLimit limit = eps_limit(p);
     eps_sweep(md, p, limit.w, "limit", 1e-8, 20000, c.lambda1,
-              "h = 1/" + std::to_string(n) + ", Gauss sampling" + (n == 4 ? " (the paper's grid and (8) as printed)" : "") +
-                  ", each eps against the limit eps -> 0 extrapolated from eps = 1e-12 (error ratio per decade " +
-                  fmt("%.3f", limit.ratio) + "; the limit is uncertain by " + fmt("%.0e", limit.estimate) + ").");
+              words(n == paper_cells() ? "hard_cases.sweep_limit_caption_paper" : "hard_cases.sweep_limit_caption",
+                    {{"n", std::to_string(n)}, {"ratio", fmt("%.3f", limit.ratio)}, {"uncertain", fmt("%.0e", limit.estimate)}}));
   }
 }
 
@@ -160,8 +154,7 @@ void point_obstacle(std::ostream& md, const Context& c) {
     *c.point_rows << n << ',' << members(r.active) << ',' << force << ',' << ratio << ',' << gap << ','
                   << (r.converged ? 1 : 0) << '\n';
   }
-  md << "\nTable: The point obstacle on finer grids: w_c / P, the plate's compliance at its centre, beside the "
-        "published coefficient. Read the last column. The plate touches the centre node alone unless marked.\n";
+  md << "\nTable: " << words("hard_cases.point_caption") << "\n";
 }
 
 // Contact on an area: where it starts (the published sag), and how the active set grows with n.
@@ -206,8 +199,7 @@ void flat_support(std::ostream& md, const Context& c) {
     }
     previous = members(r.active);
   }
-  md << "\nTable: The flat support on finer grids (R = 5e-4): the contact set, the force density at the "
-        "centre node, the total force, and the work of the solver with and without the coarser grid's set.\n";
+  md << "\nTable: " << words("hard_cases.flat_caption") << "\n";
   md << "\nPer halving of h the touching nodes of an area grow 4 times, those of a curve 2: compare the ratio column. "
         "The force density at the centre is to be compared with q = 1. From an empty set the primal-dual iteration needs "
      << cold_its << " iterations on n = " << cold_ns << ", most with their own factorisation; started from the coarser grid's contact set "
@@ -234,9 +226,7 @@ void many_regions(std::ostream& md, const Context&) {
        << fmt("%.1e", r.certificate.worst()) << " | " << yes_no(pen.converged) << " | " << contact_regions(g, touched)
        << " | " << fmt("%.1e", pen.error) << " | " << fmt("%.1e", 1e-10 * r.lambda.maxCoeff()) << " |\n";
   }
-  md << "\nTable: Sixteen bumps under three loads: the contact regions the exact solver finds, and whether (3a), a "
-        "second algorithm, finds the same ones. Compare (3a)'s distance from the exact answer with eps times "
-        "the largest multiplier (last column), the size the penalty's own error takes.\n";
+  md << "\nTable: " << words("hard_cases.bumps_caption") << "\n";
 }
 
 // Complementarity's degenerate case: touched with zero force.
@@ -281,8 +271,7 @@ void million_unknowns(std::ostream& md, const Context& c) {
        << " | " << fmt("%.1e", r.bound.bound) << " | " << fmt("%.1e", r.error) << " |\n";
     *c.timings << "million unknowns," << c.fine << "," << to_string(s) << "," << fmt("%.3g", r.seconds) << "\n";
   }
-  md << "\nTable: The paper's problem at n = " << c.fine << " by the exact solver and by the paper's two schemes, "
-        "each judged by its own certificate or error bound and by its distance from the exact answer.\n";
+  md << "\nTable: " << words("hard_cases.million_caption", {{"n", std::to_string(c.fine)}}) << "\n";
   md << "\nAt the same eps the penalised solution is further from the exact one here than on n = 16 (the "
         "nodal table above): the contact force concentrates on the rim, and its nodal density grows as h "
         "falls.\n";

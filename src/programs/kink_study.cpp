@@ -22,6 +22,7 @@
 #include "published.hpp"
 #include "rim_contact.hpp"
 #include "stopwatch.hpp"
+#include "words.hpp"
 
 using namespace plate;
 
@@ -154,7 +155,7 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<SceneCase>&
         before = &r;
       }
     }
-    o << "\nTable: " << c.name << ": each grid's relative distance from the series, and the order from the grid before.\n\n";
+    o << "\nTable: " << words("kink_study.scene_caption", {{"scene", c.name}}) << "\n\n";
   }
   o << "| scene | n | cond(K), plain | cond(K), kink carried | ratio |\n|---|---:|---:|---:|---:|\n";
   for (const SceneCase& c : cases)
@@ -165,8 +166,7 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<SceneCase>&
           o << "| " << c.key << " | " << p.n << " | " << fmt("%.1e", p.cond) << " | " << fmt("%.1e", k.cond) << " | "
             << fmt("%.2f", k.cond / p.cond) << " |\n";
     }
-  o << "\nTable: The 2-norm condition number of the stiffness of the part of the plate solved, scaled to a unit "
-       "diagonal (what limits a Cholesky solve), in each space, estimated by power and inverse iteration.\n\n";
+  o << "\nTable: " << words("kink_study.condition_caption") << "\n\n";
   o << "**Targets**, measured in this run:\n\n";
   for (const SceneCase& c : cases) {
     const int lo = 2 * c.coarsest, hi = 16 * c.coarsest;

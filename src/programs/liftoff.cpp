@@ -24,6 +24,7 @@
 #include "progress.hpp"
 #include "refinement.hpp"
 #include "stopwatch.hpp"
+#include "words.hpp"
 
 using namespace plate;
 
@@ -157,18 +158,20 @@ std::string report(const std::vector<Run>& runs, int& failures) {
     const ErrorBar a = finest_bar(ours);
     const ErrorBar b = error_bar(theirs);
     const double diff = std::abs(a.value - b.value), tol = a.bar + b.bar;
-    md << "\nTable: " << s.name << ": each kind of rows on each grid, and FreeFEM on meshes fitted to the circle. Read the "
-          "dips: the periodic splines leave the plate below the obstacle where the contact ends, the default rows do not.\n\n"
-       << "max w: ours (default rows, h = 1/256) " << num(a.value, ours_noise) << " " << bar_cell(a) << "; FreeFEM (finest mesh) "
-       << num(b.value, theirs_noise) << " " << bar_cell(b) << "; they differ by " << fmt("%.1e", diff) << (diff <= tol ? ", within" : ", **more than**")
-       << " the sum of the bars, " << fmt_up(tol) << ".\n\n";
+    md << "\nTable: " << words("liftoff.caption", {{"scene", s.name}}) << "\n\n"
+       << words("liftoff.verdict_default", {{"ours", num(a.value, ours_noise)}, {"ours_bar", bar_cell(a)},
+                                            {"theirs", num(b.value, theirs_noise)}, {"theirs_bar", bar_cell(b)},
+                                            {"diff", fmt("%.1e", diff)}, {"judged", diff <= tol ? ", within" : ", **more than**"},
+                                            {"tol", fmt_up(tol)}})
+       << "\n\n";
     failures += diff > tol;
     // The same for `plate`'s default, which carries the kink on the grids it fits.
     const ErrorBar k = finest_bar(kinked);
     const double kdiff = std::abs(k.value - b.value), ktol = k.bar + b.bar;
-    md << "max w: ours (default rows with the kink carried, h = 1/256) " << num(k.value, kink_noise) << " " << bar_cell(k)
-       << "; it differs from FreeFEM by " << fmt("%.1e", kdiff) << (kdiff <= ktol ? ", within" : ", **more than**")
-       << " the sum of the bars, " << fmt_up(ktol) << ".\n\n";
+    md << words("liftoff.verdict_kink", {{"ours", num(k.value, kink_noise)}, {"ours_bar", bar_cell(k)},
+                                         {"diff", fmt("%.1e", kdiff)}, {"judged", kdiff <= ktol ? ", within" : ", **more than**"},
+                                         {"tol", fmt_up(ktol)}})
+       << "\n\n";
     failures += kdiff > ktol;
   }
   return md.str();

@@ -16,6 +16,7 @@
 #include "exit_codes.hpp"
 #include "format.hpp"
 #include "rim_report.hpp"
+#include "words.hpp"
 
 using namespace plate;
 
@@ -44,15 +45,16 @@ std::string table_md(const RimAnswer& a) {
     o << "| " << r.level << " | " << r.harmonics << " | " << r.degree << " | " << r.corner_terms << " | " << r.unknowns
       << " | " << rim_digits(r.max_w, a.bar_max_w) << " | " << rim_digits(r.total_force, a.bar_force) << " | "
       << rim_digits(r.q0, a.bar_q0) << " | " << rim_digits(r.q45, a.bar_q45) << " | " << fmt_up(r.edge_residual) << " | " << fmt_up(r.rim_residual) << " |\n";
-  o << "\nTable: The rim-contact series truncated at " << a.rows.size() << " levels, each with more harmonics, a higher degree and "
-       "more corner terms. Read each column settle; the misfits are the largest violations of the clamped edge and "
-       "of contact along the rim.\n";
-  o << "\nThe bars of the answer are the changes from level " << a.rows.size() - 2 << " to level " << a.rows.size() - 1
-    << " (floored at 1000 u relative); the changes shrink " << (a.settled ? "at every level" : "NOT at every level")
-    << ". The premise, contact along the whole rim, " << (a.premise.holds ? "holds" : "FAILS: " + a.premise.why)
-    << ": the least line load is " << rim_digits(a.premise.min_q, a.bar_q45) << " (at theta = " << fmt("%.4g", a.premise.theta_min_q)
-    << "), and inside the disk the plate stays at least " << fmt("%.3g", a.premise.min_w_minus_R)
-    << " above the cylinder (on rings down to a thousandth of the radius inside the rim).\n";
+  o << "\nTable: " << words("rim_series.caption", {{"levels", std::to_string(a.rows.size())}}) << "\n";
+  o << "\n"
+    << words("rim_series.bars", {{"from", std::to_string(a.rows.size() - 2)},
+                                 {"to", std::to_string(a.rows.size() - 1)},
+                                 {"shrink", a.settled ? "at every level" : "NOT at every level"},
+                                 {"premise", a.premise.holds ? "holds" : "FAILS: " + a.premise.why},
+                                 {"min_q", rim_digits(a.premise.min_q, a.bar_q45)},
+                                 {"theta", fmt("%.4g", a.premise.theta_min_q)},
+                                 {"gap", fmt("%.3g", a.premise.min_w_minus_R)}})
+    << "\n";
   return o.str();
 }
 

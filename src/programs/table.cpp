@@ -18,6 +18,7 @@
 #include "norms.hpp"
 #include "published.hpp"
 #include "schemes.hpp"
+#include "words.hpp"
 
 using namespace plate;
 
@@ -91,12 +92,13 @@ std::string markdown(const std::vector<Case>& cases, const std::vector<Published
   std::ostringstream md;
   for (const Case& c : cases) {
     const Noise z = noise(c);
-    const std::string caption =
-        "h = 1/" + std::to_string(c.n) + ", " + (std::string(to_string(c.kind)) == "gauss" ? "Gauss points" : "nodes") + " (" +
-        std::to_string(4 * (c.n - 1) * (c.n - 1)) + " unknowns, $\\lambda_{1h}$ = " + fmt("%.4f", c.lambda1h) +
-        "): read the (5a) iterations against " + (with_paper ? "the paper's and GLT's" : "those on the paper's grid, h = 1/4") +
-        ", and the error, each run's distance from the $\\varepsilon \\to 0$ limit (known to " +
-        reference_error(c.limit) + "; successive differences of the path shrink by " + eps_ratio(c.limit) + ").";
+    const std::string caption = words(with_paper ? "table.caption_paper" : "table.caption_fine",
+                                      {{"n", std::to_string(c.n)},
+                                       {"sampling", std::string(to_string(c.kind)) == "gauss" ? "Gauss points" : "nodes"},
+                                       {"unknowns", std::to_string(4 * (c.n - 1) * (c.n - 1))},
+                                       {"lambda1h", fmt("%.4f", c.lambda1h)},
+                                       {"known", reference_error(c.limit)},
+                                       {"ratio", eps_ratio(c.limit)}});
     md << "\n| OS |" << (with_paper ? " paper (5a) | GLT |" : "")
        << " (5a) iterations | final $\\varepsilon$ | last step | error | estimate | (3a) iterations | (3a) final $\\varepsilon$ | (3a) error |\n";
     md << "|---:|" << (with_paper ? "---:|---:|" : "") << "---:|---:|---:|---:|---:|---:|---:|---:|\n";

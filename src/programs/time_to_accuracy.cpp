@@ -29,6 +29,7 @@
 #include "rim_contact.hpp"
 #include "rim_report.hpp"
 #include "stopwatch.hpp"
+#include "words.hpp"
 
 using namespace plate;
 
@@ -311,10 +312,8 @@ std::string report(const std::vector<Run>& runs, const std::vector<Config>& conf
       for (const std::string& text : cells) md << " | " << text;
       md << " |\n";
     }
-    md << "\nTable: Time to " << title << " within each relative distance of the plate's answer: the wall time of "
-          "the whole process on the coarsest grid that gets there. Read along a row for the price of each digit, "
-          "down a column for the fastest way to it.";
-    if (!never.empty()) md << " Not within 1e-4 on any grid run: " << never << ".";
+    md << "\nTable: " << words("time_to_accuracy.caption", {{"quantity", title}});
+    if (!never.empty()) md << " " << words("time_to_accuracy.never", {{"runs", never}});
     md << "\n\n";
   }
   md << "**Targets**, measured in this run:\n\n";
