@@ -15,6 +15,7 @@
 #include "run_program.hpp"
 #include "scratch.hpp"
 #include "words.hpp"
+#include "words_file.hpp"
 
 using namespace plate;
 

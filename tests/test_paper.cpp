@@ -22,6 +22,7 @@
 #include "run_program.hpp"
 #include "scratch.hpp"
 #include "words.hpp"
+#include "words_file.hpp"
 
 namespace {
 namespace fs = std::filesystem;

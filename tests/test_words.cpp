@@ -7,6 +7,7 @@
 
 #include "scratch.hpp"
 #include "words.hpp"
+#include "words_file.hpp"
 
 using namespace plate;
 
@@ -21,7 +22,7 @@ struct WordsFile {
 std::string error_of(const Words& w, const std::string& text) {
   try {
     w.render(text);
-  } catch (const std::runtime_error& e) {
+  } catch (const std::invalid_argument& e) {
     return e.what();
   }
   return "";
@@ -45,15 +46,32 @@ TEST(Words, AMarkerAndItsEntryThatDisagreeAreErrorsNamingThem) {
   EXPECT_EQ(error_of(w, words("a.caption", {{"n", "8"}})), "");
 }
 
-TEST(Words, AValueThatWouldBreakItsMarkerIsRefused) {
+TEST(Words, AMarkerThatWouldNotReadBackIsRefusedWhenWritten) {
   EXPECT_THROW(words("k", {{"v", "say \"this\""}}), std::invalid_argument);
   EXPECT_THROW(words("k", {{"v", "--edge"}}), std::invalid_argument);
   EXPECT_THROW(words("k", {{"v", "two\nlines"}}), std::invalid_argument);
+  EXPECT_THROW(words("a key"), std::invalid_argument);
+  EXPECT_THROW(words("k", {{"bad-name", "1"}}), std::invalid_argument);
+  EXPECT_THROW(words("k", {{"n", "1"}, {"n", "2"}}), std::invalid_argument);
 }
 
-TEST(Words, AFileWithAnEntryTwiceOrAnEmptyEntryIsRefused) {
-  const WordsFile twice("## k\nOne.\n## k\nTwo.\n"), empty("## k\n\n## j\nJ.\n");
-  EXPECT_THROW(Words{twice.path}, std::runtime_error);
-  EXPECT_THROW(Words{empty.path}, std::runtime_error);
-  EXPECT_THROW(Words{"/nonexistent/words.md"}, std::runtime_error);
+// What the pattern does not take must not pass through as an invisible HTML comment, and a value
+// given twice must not silently take the last.
+TEST(Words, AMarkerWrittenByHandThatDoesNotReadIsAnError) {
+  const WordsFile f("## k\nThe plate at n = @{n}.\n");
+  const Words w(f.path);
+  EXPECT_NE(error_of(w, "<!--words k bad-name=\"1\"-->").find("cannot be read"), std::string::npos);
+  EXPECT_NE(error_of(w, "<!--words k  n=\"1\"-->").find("cannot be read"), std::string::npos);
+  EXPECT_NE(error_of(w, "<!--words k n=\"1\" n=\"2\"-->").find("twice"), std::string::npos);
+}
+
+TEST(Words, AFileWithAnEntryTwiceAnEmptyEntryOrAHeadingInsideIsRefused) {
+  const WordsFile twice("## k\nOne.\n## k\nTwo.\n"), empty("## k\n\n## j\nJ.\n"), heading("## k\nOne.\n# Notes\nmore\n");
+  EXPECT_THROW(Words{twice.path}, std::invalid_argument);
+  EXPECT_THROW(Words{empty.path}, std::invalid_argument);
+  EXPECT_THROW(Words{heading.path}, std::invalid_argument);
+  EXPECT_THROW(Words{"/nonexistent/words.md"}, std::invalid_argument);
+  // A key followed by a carriage return or spaces (a file saved elsewhere) is the same key.
+  const WordsFile crlf("## k \r\nOne.\r\n");
+  EXPECT_EQ(Words(crlf.path).render(words("k")), "One.");
 }

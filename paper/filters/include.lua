@@ -79,12 +79,13 @@ end
 function Div(el)
   local path = el.attributes["include"]
   if not path then return nil end
+  -- Opened here only to stop with this message, which names the remedy, before render_report's own.
   local f = io.open(path, "r")
   if not f then error("include.lua: cannot open " .. path .. " (run make results first)") end
   f:close()
-  -- The report's captions and standing sentences are markers; build/render_report puts in their
-  -- words from reports/words.md (one place, which a terminal reader's render_report also reads). An
-  -- unknown entry stops the build.
+  -- The report's captions and sentences are markers; build/render_report puts in their words from
+  -- reports/words.md (one place, which a terminal reader's render_report also reads). A marker it
+  -- cannot render stops the build.
   local text = pandoc.pipe(os.getenv("RENDER_REPORT") or "build/render_report", {path}, "")
   -- Without smart punctuation: a report that says "--scheme nonlinear" must keep its two dashes.
   local blocks = pandoc.read(text, "markdown-smart").blocks
