@@ -126,8 +126,7 @@ Row solve_one(const Variant& v, int n, const Scene& scene) {
   return row;
 }
 
-std::string num(double v, double noise) { return std::isfinite(v) ? fmt_above(v, noise, 10, 'g') : ""; }
-std::string num(const Row& r, const Quantity& q) { return num(r.*q.field, r.*q.noise); }
+std::string row_value(const Row& r, const Quantity& q) { return fmt_value(r.*q.field, r.*q.noise, 10, ""); }
 
 std::vector<double> column(const std::vector<Row>& rows, const std::string& kind, double Row::*field) {
   std::vector<double> v;
@@ -149,7 +148,7 @@ std::string csv(const std::vector<Row>& rows) {
   for (const Row& r : rows) {
     o << r.kind << "," << r.n << "," << r.unknowns << "," << r.samples << "," << r.edge_points << ","
       << (r.certified ? 1 : 0);
-    for (const Quantity& q : kQuantities) o << "," << num(r, q);
+    for (const Quantity& q : kQuantities) o << "," << row_value(r, q);
     o << "\n";
   }
   return o.str();
@@ -241,7 +240,7 @@ std::string markdown(const Study& s) {
     for (const Row& r : s.rows) {
       if (r.kind != k) continue;
       o << "| " << r.n << (r.certified ? "" : " (**not certified**)") << " | " << r.unknowns << " | " << r.samples;
-      for (const Quantity* q : shown) o << " | " << (std::isfinite(r.*q->field) ? num(r, *q) : "n/a");
+      for (const Quantity* q : shown) o << " | " << (std::isfinite(r.*q->field) ? row_value(r, *q) : "n/a");
       o << " |\n";
     }
     o << "\nTable: " << words("continuum.sampling_caption", {{"sampling", sampling_title(k)}}) << "\n\n";
@@ -291,7 +290,7 @@ std::string limits(const Study& s) {
       const Extrapolation& e = s.fits.at({k, q.name});
       if (e.orders.empty() || !std::isfinite(e.limit)) continue;  // a sampling that has no such value (q off the rim)
       o << q.column << "," << k << "," << (e.steady ? 1 : 0) << ","
-        << (e.steady ? format_order(e.orders.back(), e.order_noise.back()) : "") << "," << num(e.limit, e.limit_noise)
+        << (e.steady ? format_order(e.orders.back(), e.order_noise.back()) : "") << "," << fmt_value(e.limit, e.limit_noise, 10, "")
         << "," << bar_number(e) << "\n";
     }
   return o.str();
@@ -333,7 +332,7 @@ std::string line_loads(const Study& s) {
     if (!spline && !points) continue;
     const double noise = r.noise_line;
     auto put = [&](double t, double q) {
-      o << r.kind << "," << r.n << "," << fmt("%.10g", t) << "," << num(q, noise) << "," << fmt("%.10g", y.q(t)) << ","
+      o << r.kind << "," << r.n << "," << fmt("%.10g", t) << "," << fmt_value(q, noise, 10, "") << "," << fmt("%.10g", y.q(t)) << ","
         << fmt_above(std::abs(q - y.q(t)) / y.q_cos.at(0), noise / y.q_cos.at(0), 3) << "\n";
     };
     if (spline)

@@ -83,10 +83,7 @@ std::vector<Quantity> quantities(const Scene& scene) {
   return q;
 }
 
-std::string num(double v, double noise, int digits = 10) {
-  return std::isfinite(v) ? fmt_above(v, noise, digits, 'g') : "n/a";
-}
-std::string num(const CheckValues& r, double v) { return num(v, noise(r, v)); }
+std::string run_value(const CheckValues& r, double v) { return fmt_value(v, noise(r, v), 10); }
 
 Extrapolation fit(const std::vector<CheckValues>& runs, const Quantity& q) {
   std::vector<double> v, z;
@@ -172,7 +169,7 @@ void write_tables(const Setup& u, const Runs& runs) {
           << (r.certified ? 1 : 0) << "," << r.iterations;
       for (const Quantity& q : qs) {
         const bool has = ser != &runs.disk || q.column == "total_force" || q.column == "max_w";
-        csv << "," << (has ? num(q.get(r), q.noise(r)) : "");
+        csv << "," << (has ? fmt_value(q.get(r), q.noise(r), 10) : "");
       }
       csv << "\n";
       timings << scene << "," << r.code << "," << r.cells << "," << fmt("%.3g", r.seconds) << "\n";
@@ -205,8 +202,8 @@ void write_tables(const Setup& u, const Runs& runs) {
 
 void runs_table(std::ostream& md, const Runs& runs, const std::vector<const std::vector<CheckValues>*>& series,
                 bool line_load, const std::string& caption) {
-  // Certification is a column of "yes" when every run has it: said once in the caption instead, and
-  // a run without it is marked in its own row.
+  // Certification is a column of "yes" when every run has it: each caller's caption (reports/words.md)
+  // says it once instead, and a run without it is marked in its own row.
   md << "| code | grid | unknowns | max w";
   for (const CheckPoint& c : kCheckPoints) md << " | " << c.name;
   md << " | total force" << (line_load ? " | mean line force | q(0) | q(pi/4)" : "") << " |\n|";
@@ -215,10 +212,10 @@ void runs_table(std::ostream& md, const Runs& runs, const std::vector<const std:
   for (const auto* ser : series)
     for (const auto& r : *ser) {
       md << "| " << label(*ser, runs) << " | " << r.grid << (r.certified ? "" : " (**not certified**)") << " | "
-         << r.unknowns << " | " << num(r.max_w, noise_w(r, 0));
-      for (size_t k = 0; k < r.w_at.size(); ++k) md << " | " << num(r.w_at[k], noise_w(r, 1 + static_cast<int>(k)));
-      md << " | " << num(r, r.force);
-      if (line_load) md << " | " << num(r, r.mean_line) << " | " << num(r, r.q0) << " | " << num(r, r.q45);
+         << r.unknowns << " | " << fmt_value(r.max_w, noise_w(r, 0), 10);
+      for (size_t k = 0; k < r.w_at.size(); ++k) md << " | " << fmt_value(r.w_at[k], noise_w(r, 1 + static_cast<int>(k)), 10);
+      md << " | " << run_value(r, r.force);
+      if (line_load) md << " | " << run_value(r, r.mean_line) << " | " << run_value(r, r.q0) << " | " << run_value(r, r.q45);
       md << " |\n";
     }
   md << "\nTable: " << caption << "\n";
@@ -407,8 +404,8 @@ bool disk_verdict(std::ostream& md, const Setup& u, const Runs& runs) {
   bool certified = true;
   for (const auto& r : runs.disk) {
     certified = certified && r.certified;
-    md << "| " << r.grid << (r.certified ? "" : " (**not certified**)") << " | " << r.unknowns << " | " << num(r.w_at.at(0), noise_w(r, 1))
-       << " | " << fmt_above(r.w_at[0] - w0, noise_w(r, 1), 2) << " | " << num(r, r.force) << " | "
+    md << "| " << r.grid << (r.certified ? "" : " (**not certified**)") << " | " << r.unknowns << " | " << fmt_value(r.w_at.at(0), noise_w(r, 1), 10)
+       << " | " << fmt_above(r.w_at[0] - w0, noise_w(r, 1), 2) << " | " << run_value(r, r.force) << " | "
        << fmt_above(r.force - force, noise(r, force), 2) << " |\n";
   }
   md << "\nTable: " << words("crosscheck.disk_runs_caption") << "\n";

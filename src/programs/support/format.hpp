@@ -50,6 +50,16 @@ inline std::string fmt_above(double v, double noise, int max_digits, char style 
   return fmt(f.c_str(), v);
 }
 // @end fmt-above
+// A measured value in a report's cell or CSV field: fmt_above in the %g style, and `missing` where
+// there is no value. Each report chooses max_digits once (10 for the grids' values, 12 where the
+// lift-off scenes' values differ in the ninth digit).
+inline std::string fmt_value(double v, double noise, int max_digits, const char* missing = "n/a") {
+  return std::isfinite(v) ? fmt_above(v, noise, max_digits, 'g') : missing;
+}
+// v to `digits` significant digits, as %g prints it: for values with no noise estimate, whose
+// printing must not be what limits them (the series' 13 settled digits print with 15).
+inline std::string fmt_digits(double v, int digits) { return fmt(("%." + std::to_string(digits) + "g").c_str(), v); }
+
 // The number in what fmt_above printed: the value, or for "< b" the bound b that it claims.
 inline std::string without_bound(const std::string& printed) {
   return printed.rfind("< ", 0) == 0 ? printed.substr(2) : printed;

@@ -15,12 +15,8 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 // The series settles to about 13 digits: print 15, so the bars speak, not the printing.
-std::string num(double v) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%.15g", v);
-  return b;
-}
-Json number(double v) { return std::isfinite(v) ? Json(std::stod(num(v))) : Json(nullptr); }
+std::string series_value(double v) { return fmt_digits(v, 15); }
+Json number(double v) { return std::isfinite(v) ? Json(std::stod(series_value(v))) : Json(nullptr); }
 double theta_at(int k, int angles) { return 2 * M_PI * k / angles; }
 std::string bar(double v) {
   char b[40];
@@ -65,8 +61,8 @@ std::string rim_line_csv(const RimSeries& s, int angles) {
        "theta,x,y,q\n";
   for (int k = 0; k < angles; ++k) {
     const double t = theta_at(k, angles);
-    o << num(t) << ',' << num(s.scene.cx + s.scene.radius * std::cos(t)) << ','
-      << num(s.scene.cy + s.scene.radius * std::sin(t)) << ',' << num(s.q(t)) << '\n';
+    o << series_value(t) << ',' << series_value(s.scene.cx + s.scene.radius * std::cos(t)) << ','
+      << series_value(s.scene.cy + s.scene.radius * std::sin(t)) << ',' << series_value(s.q(t)) << '\n';
   }
   return o.str();
 }
@@ -124,14 +120,14 @@ std::string rim_summary_text(const RimReport& r) {
   o << (r.converged ? "converged" : "NOT CONVERGED: " + r.message) << "\n";
   o << "series: " << a.rows.size() << " truncations, the last with " << a.rows.back().unknowns
     << " unknowns; the bars are the change from the one before" << (a.settled ? "" : " (NOT settled)") << "\n";
-  o << "max w = " << num(peak.w) << " +- " << bar(a.bar_max_w) << " at (" << num(peak.x) << ", " << num(peak.y) << ")\n";
-  for (const auto& [x, y] : r.points) o << "w(" << num(x) << ", " << num(y) << ") = " << num(s.w(x, y)) << "\n";
-  o << "total contact force = " << num(s.total_force()) << " +- " << bar(a.bar_force) << ", max |m12| = "
-    << num(std::isfinite(r.max_abs_m12) ? r.max_abs_m12 : rim_max_abs_m12(s, r.nu)) << " (searched on the plate)\n";
-  o << "line load on the rim: mean " << num(s.q_cos.empty() ? NAN : s.q_cos[0]) << ", q(0) = " << num(s.q(0)) << " +- "
-    << bar(a.bar_q0) << ", q(pi/4) = " << num(s.q(M_PI / 4)) << " +- " << bar(a.bar_q45) << "\n";
+  o << "max w = " << series_value(peak.w) << " +- " << bar(a.bar_max_w) << " at (" << series_value(peak.x) << ", " << series_value(peak.y) << ")\n";
+  for (const auto& [x, y] : r.points) o << "w(" << series_value(x) << ", " << series_value(y) << ") = " << series_value(s.w(x, y)) << "\n";
+  o << "total contact force = " << series_value(s.total_force()) << " +- " << bar(a.bar_force) << ", max |m12| = "
+    << series_value(std::isfinite(r.max_abs_m12) ? r.max_abs_m12 : rim_max_abs_m12(s, r.nu)) << " (searched on the plate)\n";
+  o << "line load on the rim: mean " << series_value(s.q_cos.empty() ? NAN : s.q_cos[0]) << ", q(0) = " << series_value(s.q(0)) << " +- "
+    << bar(a.bar_q0) << ", q(pi/4) = " << series_value(s.q(M_PI / 4)) << " +- " << bar(a.bar_q45) << "\n";
   o << "premise (contact along the whole rim): " << (a.premise.holds ? "holds" : "FAILS: " + a.premise.why)
-    << "; min q = " << num(a.premise.min_q) << ", min (w - R) inside the disk = " << num(a.premise.min_w_minus_R) << "\n";
+    << "; min q = " << series_value(a.premise.min_q) << ", min (w - R) inside the disk = " << series_value(a.premise.min_w_minus_R) << "\n";
   char b[64];
   std::snprintf(b, sizeof b, "time: total %.3g s\n", r.seconds_total);
   o << b;

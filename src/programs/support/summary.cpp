@@ -14,12 +14,8 @@
 namespace plate {
 
 namespace {
-std::string num(double v) {
-  if (!std::isfinite(v)) return "null";
-  char b[32];
-  std::snprintf(b, sizeof b, "%.10g", v);
-  return b;
-}
+// Ten digits: more than any answer here is certain to, so the printing never limits it.
+std::string summary_value(double v) { return std::isfinite(v) ? fmt_digits(v, 10) : "null"; }
 std::string csv_num(double v) {
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
   char b[32];
@@ -180,7 +176,7 @@ std::string error_bars_text(const Report& r) {
   for (size_t k = 0; k < r.bar_grids.size(); ++k) o << (k ? ", " : " ") << r.bar_grids[k];
   o << " of this run's sequence" << (r.bar_grids_note.empty() ? "" : "; " + r.bar_grids_note) << "):\n";
   for (const auto& [name, b] : r.bars) {
-    o << "  " << name << " = " << num(b.value) << " +- " << fmt("%.2g", b.bar) << "  (";
+    o << "  " << name << " = " << summary_value(b.value) << " +- " << fmt("%.2g", b.bar) << "  (";
     if (b.basis == "richardson") o << "Richardson, order " << fmt("%.2f", b.order) << ", steady";
     else if (b.basis == "last difference")
       o << "NOT STEADY: the last difference" << (std::isfinite(b.order) ? ", order " + fmt("%.2f", b.order) : std::string(", one grid before"));
@@ -257,45 +253,45 @@ std::string summary_text(const Report& r) {
   o << "\nspace: " << r.space << "\n";
   if (!s.levels.empty()) {
     o << "levels (eps: iterations):";
-    for (const auto& l : s.levels) o << " " << num(l.eps / r.eps_unit) << ":" << l.iterations;
+    for (const auto& l : s.levels) o << " " << summary_value(l.eps / r.eps_unit) << ":" << l.iterations;
     o << "  total " << s.total_iterations() << "\n";
   }
-  o << "max w = " << num(r.max_w.value) << " at (" << num(r.max_w.x) << ", " << num(r.max_w.y) << "), min w = "
-    << num(r.min_w.value) << " at (" << num(r.min_w.x) << ", " << num(r.min_w.y)
-    << ") (of w_h over the plate; the largest nodal value is " << num(e.max_w) << " at (" << num(f.x[e.argmax_w]) << ", "
-    << num(f.y[e.argmax_w]) << "))\n";
+  o << "max w = " << summary_value(r.max_w.value) << " at (" << summary_value(r.max_w.x) << ", " << summary_value(r.max_w.y) << "), min w = "
+    << summary_value(r.min_w.value) << " at (" << summary_value(r.min_w.x) << ", " << summary_value(r.min_w.y)
+    << ") (of w_h over the plate; the largest nodal value is " << summary_value(e.max_w) << " at (" << summary_value(f.x[e.argmax_w]) << ", "
+    << summary_value(f.y[e.argmax_w]) << "))\n";
   for (size_t k = 0; k < r.points.size(); ++k)
-    o << "w(" << num(r.points[k].first) << ", " << num(r.points[k].second) << ") = " << num(r.w_at_points.at(k)) << "\n";
-  o << "total contact force = " << num(total_contact_force(*r.problem, xi)) << ", max xi at nodes = "
-    << num(e.max_xi) << ", max |m12| = " << num(r.max_abs_m12.value) << " at (" << num(r.max_abs_m12.x) << ", "
-    << num(r.max_abs_m12.y) << ") (at the nodes " << num(e.max_abs_m12) << "), contact nodes: " << e.contact.size() << "\n";
+    o << "w(" << summary_value(r.points[k].first) << ", " << summary_value(r.points[k].second) << ") = " << summary_value(r.w_at_points.at(k)) << "\n";
+  o << "total contact force = " << summary_value(total_contact_force(*r.problem, xi)) << ", max xi at nodes = "
+    << summary_value(e.max_xi) << ", max |m12| = " << summary_value(r.max_abs_m12.value) << " at (" << summary_value(r.max_abs_m12.x) << ", "
+    << summary_value(r.max_abs_m12.y) << ") (at the nodes " << summary_value(e.max_abs_m12) << "), contact nodes: " << e.contact.size() << "\n";
   if (!r.line.empty()) {
     const LineForce& l = r.line;
-    o << "line load on the edge (" << l.q.size() << (l.spline_degree > 0 ? " spline knots" : " points") << "): mean " << num(l.mean) << " (total " << num(l.total)
-      << " over length " << num(l.length) << "), min " << num(l.min)
-      << (std::isfinite(l.theta_min) ? " at theta = " + num(l.theta_min) : std::string()) << ", max " << num(l.max)
-      << (std::isfinite(l.theta_max) ? " at theta = " + num(l.theta_max) : std::string());
+    o << "line load on the edge (" << l.q.size() << (l.spline_degree > 0 ? " spline knots" : " points") << "): mean " << summary_value(l.mean) << " (total " << summary_value(l.total)
+      << " over length " << summary_value(l.length) << "), min " << summary_value(l.min)
+      << (std::isfinite(l.theta_min) ? " at theta = " + summary_value(l.theta_min) : std::string()) << ", max " << summary_value(l.max)
+      << (std::isfinite(l.theta_max) ? " at theta = " + summary_value(l.theta_max) : std::string());
     if (!l.theta.empty() && l.spline_degree > 0)
-      o << "; q(0) = " << num(line_force_value(l, 0)) << ", q(pi/4) = " << num(line_force_value(l, M_PI / 4)) << " (the spline)";
+      o << "; q(0) = " << summary_value(line_force_value(l, 0)) << ", q(pi/4) = " << summary_value(line_force_value(l, M_PI / 4)) << " (the spline)";
     else if (!l.theta.empty())
-      o << "; fitted q(0) = " << num(line_force_fit(l, 0)) << ", q(pi/4) = " << num(line_force_fit(l, M_PI / 4))
-        << " (points: " << num(line_force_value(l, 0)) << ", " << num(line_force_value(l, M_PI / 4)) << ")";
+      o << "; fitted q(0) = " << summary_value(line_force_fit(l, 0)) << ", q(pi/4) = " << summary_value(line_force_fit(l, M_PI / 4))
+        << " (points: " << summary_value(line_force_value(l, 0)) << ", " << summary_value(line_force_value(l, M_PI / 4)) << ")";
     o << "\n";
     if (std::isfinite(r.dip_below_edge))
-      o << "  between the rows the plate dips at most " << num(r.dip_below_edge) << " below the edge (points h/32 apart)\n";
+      o << "  between the rows the plate dips at most " << summary_value(r.dip_below_edge) << " below the edge (points h/32 apart)\n";
     if (!l.fourier.empty() && l.spline_degree == 0) {
       o << "  fit q(theta) ~";
-      for (size_t k = 0; k < l.fourier.size(); ++k) o << (k ? " + " : " ") << num(l.fourier[k]) << (k ? " cos " + std::to_string(4 * k) + " theta" : "");
+      for (size_t k = 0; k < l.fourier.size(); ++k) o << (k ? " + " : " ") << summary_value(l.fourier[k]) << (k ? " cos " + std::to_string(4 * k) + " theta" : "");
       o << "\n";
     }
   }
   o << error_bars_text(r);
   if (r.certificate) {
     const Certificate& c = *r.certificate;
-    o << "certificate (discrete: the distance to the discrete answer; relative): violation " << num(c.violation) << ", negative multiplier "
-      << num(c.negative_multiplier) << ", complementarity " << num(c.complementarity) << ", stationarity "
-      << num(c.stationarity) << (c.worst() <= r.certificate_tol ? " (all <= " : " (NOT all <= ")
-      << num(r.certificate_tol) << ")\n";
+    o << "certificate (discrete: the distance to the discrete answer; relative): violation " << summary_value(c.violation) << ", negative multiplier "
+      << summary_value(c.negative_multiplier) << ", complementarity " << summary_value(c.complementarity) << ", stationarity "
+      << summary_value(c.stationarity) << (c.worst() <= r.certificate_tol ? " (all <= " : " (NOT all <= ")
+      << summary_value(r.certificate_tol) << ")\n";
     if (!r.refinement.empty()) {
       o << "refinement (long-double residual), relative size of each correction:";
       for (double c : r.refinement) o << " " << fmt("%.1e", c);
@@ -303,11 +299,11 @@ std::string summary_text(const Report& r) {
     }
   }
   if (!r.certificate)
-    o << "error bound from the residual of (2a): max |w - w_eps| <= " << num(s.bound.bound) << " (round-off floor "
-      << num(s.bound.roundoff) << ")" << (s.converged ? ", within tol" : ", NOT certified") << "\n";
+    o << "error bound from the residual of (2a): max |w - w_eps| <= " << summary_value(s.bound.bound) << " (round-off floor "
+      << summary_value(s.bound.roundoff) << ")" << (s.converged ? ", within tol" : ", NOT certified") << "\n";
   if (r.lambda1h > 0)
-    o << "lambda_1h = " << num(r.lambda1h) << ", contraction per iteration at eps = " << num(s.eps / r.eps_unit) << ": sharp "
-      << num(sharp_contraction(r.lambda1h, s.eps)) << ", paper's rho " << num(paper_rho(1.0 / r.lambda1h, s.eps))
+    o << "lambda_1h = " << summary_value(r.lambda1h) << ", contraction per iteration at eps = " << summary_value(s.eps / r.eps_unit) << ": sharp "
+      << summary_value(sharp_contraction(r.lambda1h, s.eps)) << ", paper's rho " << summary_value(paper_rho(1.0 / r.lambda1h, s.eps))
       << "\n";
   char b[128];
   std::snprintf(b, sizeof b, "time: assemble %.3g s, factorise %.3g s, iterate %.3g s, bound %.3g s, total %.3g s\n",
