@@ -104,13 +104,13 @@ test-fast: build ## the unit tests alone, the mathematics (under 30 s here)
 crosscheck: results/crosscheck.md $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) $(TABLE_FIGURE) ## FreeFEM (HCT, gmsh) against this code, exactly and by the paper's penalty method: results/crosscheck.md, results/crosscheck_penalty.md
 
 $(CROSSCHECK) &: $(BUILD)/crosscheck reference/square_with_circle.geo reference/disk_with_punch.geo reference/contact_hct.edp reference/checked_solve.idp reference/plate_constants.csv $(PAPER_NUMBERS) | deps
-	scripts/step.sh "results/crosscheck.md: FreeFEM and this code on the square; FreeFEM on the disk" "1 min" $(BUILD)/crosscheck --out results --work $(BUILD)/crosscheck-work
+	scripts/step.sh "results/crosscheck.md: FreeFEM and this code on the square; FreeFEM on the disk" "30 s" $(BUILD)/crosscheck --out results --work $(BUILD)/crosscheck-work
 
 # The penalty cross-check reads our table, contraction factors and Fig. 2 data from results/.
 $(CROSSCHECK_PENALTY) &: $(BUILD)/crosscheck_penalty reference/square_with_circle.geo reference/penalty_hct.edp reference/contact_hct.edp reference/checked_solve.idp \
                          reference/paper_table.csv reference/plate_constants.csv $(PAPER_NUMBERS) results/table.csv results/contraction.csv \
                          results/fig2.csv results/fig2_mesh.csv | deps
-	scripts/step.sh "results/crosscheck_penalty.md: the FreeFEM penalty script against the table of the paper and this code at fixed eps and in Fig. 2" "8 min" $(BUILD)/crosscheck_penalty --out results --work $(BUILD)/crosscheck-penalty-work
+	scripts/step.sh "results/crosscheck_penalty.md: the FreeFEM penalty script against the table of the paper and this code at fixed eps and in Fig. 2" "4 min" $(BUILD)/crosscheck_penalty --out results --work $(BUILD)/crosscheck-penalty-work
 $(PENALTY_FIGURE): results/crosscheck_penalty_fig2.csv
 $(TABLE_FIGURE): results/crosscheck_penalty_table.csv
 
