@@ -137,10 +137,7 @@ std::string csv(const std::vector<Row>& rows) {
 
 std::string markdown(const std::vector<Row>& rows, const std::vector<SceneCase>& cases) {
   std::ostringstream o;
-  o << "Made by `make kink` (`build/kink_study`); the numbers are in `kink.csv`. Each run is the exact solver with the "
-       "default rows, certified to 1e-10, in the plain Bogner-Fox-Schmit space (`--enrich none`) and with the functions "
-       "that carry the kink at the rim (D31, the default), measured against the rim-contact series. Run times are in "
-       "`time_to_accuracy.md`.\n\n";
+  o << words("kink_study.intro") << "\n\n";
   for (const SceneCase& c : cases) {
     o << "| space | n | unknowns | max w | order | total force | order | line load, pointwise | order |\n"
          "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
@@ -167,19 +164,22 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<SceneCase>&
             << fmt("%.2f", k.cond / p.cond) << " |\n";
     }
   o << "\nTable: " << words("kink_study.condition_caption") << "\n\n";
-  o << "**Targets**, measured in this run:\n\n";
+  o << words("targets.heading") << "\n\n";
   for (const SceneCase& c : cases) {
     const int lo = 2 * c.coarsest, hi = 16 * c.coarsest;
     const Orders w = orders_between(rows, c.key, "kink", &Row::err_w, lo, hi), f = orders_between(rows, c.key, "kink", &Row::err_f, lo, hi);
     const bool met = w.count >= 3 && f.count >= 3 && w.least >= 3.8 && f.least >= 3.8;
-    o << "- " << c.name << ": observed order at least 3.8 in max w and the force on every grid from n = " << lo
-      << " to " << hi << ": " << (met ? "**met**" : "**not met**") << " (least " << fmt("%.2f", w.least) << " and "
-      << fmt("%.2f", f.least) << ").\n";
+    o << words("kink_study.order_target", {{"scene", c.name}, {"lo", std::to_string(lo)}, {"hi", std::to_string(hi)},
+                                           {"status", met ? "**met**" : "**not met**"},
+                                           {"least_w", fmt("%.2f", w.least)}, {"least_f", fmt("%.2f", f.least)}})
+      << "\n";
   }
   for (const Row& r : rows)
     if (r.scene == cases.front().key && r.space == "kink" && r.n == 128)
-      o << "- " << cases.front().name << ": the line load point by point within 1e-4 of the mean load at n = 128: "
-        << (r.err_line <= 1e-4 ? "**met**" : "**not met**") << " (" << fmt("%.1e", r.err_line) << ").\n";
+      o << words("kink_study.line_load_target", {{"scene", cases.front().name},
+                                                 {"status", r.err_line <= 1e-4 ? "**met**" : "**not met**"},
+                                                 {"error", fmt("%.1e", r.err_line)}})
+        << "\n";
   return o.str();
 }
 

@@ -169,20 +169,26 @@ void freefem_target(std::ostream& md, const std::vector<Run>& runs) {
   for (const double tol : {1e-6, 1e-8}) {
     const Run *whole = fastest_within(runs, tol, ours_whole), *any = fastest_within(runs, tol, ours),
               *ff = fastest_within(runs, tol, freefem);
-    md << "- max w within " << fmt("%g", tol) << " of the answer at least 5 times faster than FreeFEM, whole plate "
-          "against whole plate: ";
     if (!whole || !ff) {
-      md << "**not measured**: " << (whole ? "FreeFEM" : "our whole-plate run") << " did not reach it.\n";
+      md << words("time_to_accuracy.freefem_not_measured",
+                  {{"tol", fmt("%g", tol)}, {"which", whole ? "FreeFEM" : "our whole-plate run"}})
+         << "\n";
       continue;
     }
     const double ratio = ff->seconds / whole->seconds;
-    md << met(ratio >= 5) << ": " << whole->config->name << " at n = " << whole->n << " takes "
-       << fmt("%.3g", whole->seconds) << " s, FreeFEM at " << 4 * ff->n << " cells per quarter circle "
-       << fmt("%.3g", ff->seconds) << " s: " << fmt("%.1f", ratio) << " times";
+    md << words("time_to_accuracy.freefem_target", {{"tol", fmt("%g", tol)},
+                                                    {"status", met(ratio >= 5)},
+                                                    {"ours", whole->config->name},
+                                                    {"n", std::to_string(whole->n)},
+                                                    {"seconds", fmt("%.3g", whole->seconds)},
+                                                    {"cells", std::to_string(4 * ff->n)},
+                                                    {"ff_seconds", fmt("%.3g", ff->seconds)},
+                                                    {"ratio", fmt("%.1f", ratio)}});
     if (any && any != whole)
-      md << " (our fastest, " << any->config->name << " at n = " << any->n << " on the part of the plate its mirror "
-         << "lines leave, " << fmt("%.3g", any->seconds) << " s: " << fmt("%.1f", ff->seconds / any->seconds)
-         << " times, not like for like)";
+      md << " " << words("time_to_accuracy.freefem_fastest", {{"config", any->config->name},
+                                                              {"n", std::to_string(any->n)},
+                                                              {"seconds", fmt("%.3g", any->seconds)},
+                                                              {"ratio", fmt("%.1f", ff->seconds / any->seconds)}});
     md << ".\n";
   }
 }
@@ -199,20 +205,25 @@ const Run* fastest_to_both(const std::vector<Run>& runs, const Config& c) {
 // Target: max w within 1e-9 and the total force within 1e-8 (relative) in at most 1 s.
 void accuracy_target(std::ostream& md, const std::vector<Run>& runs, const Config& def) {
   const Run* best = fastest_to_both(runs, def);
-  md << "- The default `plate` with max w within 1e-9 and the total force within 1e-8 of the answer in at most 1 s: ";
   if (!best) {
     const Run* finest = nullptr;
     for (const Run& r : runs)
       if (r.config == &def && r.status == 0) finest = &r;
-    md << "**not met**: no run reached both";
+    md << words("time_to_accuracy.accuracy_not_reached");
     if (finest)
-      md << " (the finest, n = " << finest->n << ", " << fmt("%.3g", finest->seconds) << " s, is off by "
-         << fmt("%.1e", finest->err_w) << " and " << fmt("%.1e", finest->err_f) << ")";
+      md << " " << words("time_to_accuracy.accuracy_finest", {{"n", std::to_string(finest->n)},
+                                                              {"seconds", fmt("%.3g", finest->seconds)},
+                                                              {"err_w", fmt("%.1e", finest->err_w)},
+                                                              {"err_f", fmt("%.1e", finest->err_f)}});
     md << ".\n";
     return;
   }
-  md << met(best->seconds <= 1.0) << ": n = " << best->n << ", " << fmt("%.3g", best->seconds) << " s (off by "
-     << fmt("%.1e", best->err_w) << " and " << fmt("%.1e", best->err_f) << ").\n";
+  md << words("time_to_accuracy.accuracy_target", {{"status", met(best->seconds <= 1.0)},
+                                                   {"n", std::to_string(best->n)},
+                                                   {"seconds", fmt("%.3g", best->seconds)},
+                                                   {"err_w", fmt("%.1e", best->err_w)},
+                                                   {"err_f", fmt("%.1e", best->err_f)}})
+     << "\n";
 }
 
 // The default's line load point by point: orders between successive grids, and the value at n = 128.
@@ -220,15 +231,14 @@ void line_target(std::ostream& md, const std::vector<Run>& runs, const Config& d
   std::vector<const Run*> seq;
   for (const Run& r : runs)
     if (r.config == &def && r.status == 0 && std::isfinite(r.err_line)) seq.push_back(&r);
-  md << "- The default's line load, point by point (largest distance from the series' q over 720 angles, over the "
-        "mean load): ";
   std::vector<double> orders;
+  std::string errors, order_list;
   for (size_t i = 0; i < seq.size(); ++i) {
-    md << (i ? ", " : "") << fmt("%.1e", seq[i]->err_line) << " (n = " << seq[i]->n << ")";
+    errors += (i ? ", " : "") + fmt("%.1e", seq[i]->err_line) + " (n = " + std::to_string(seq[i]->n) + ")";
     if (i) orders.push_back(std::log2(seq[i - 1]->err_line / seq[i]->err_line));
   }
-  md << "; orders";
-  for (size_t i = 0; i < orders.size(); ++i) md << (i ? ", " : " ") << fmt("%.2f", orders[i]);
+  for (size_t i = 0; i < orders.size(); ++i) order_list += (i ? ", " : " ") + fmt("%.2f", orders[i]);
+  md << words("time_to_accuracy.line_target", {{"errors", errors}, {"orders", order_list}});
   const Run* at128 = nullptr;
   for (const Run* r : seq)
     if (r->n == 128) at128 = r;
@@ -238,13 +248,15 @@ void line_target(std::ostream& md, const std::vector<Run>& runs, const Config& d
   for (size_t i = 0; i < orders.size(); ++i)
     if (seq[i + 1]->n > 128) lo = std::min(lo, orders[i]);
   if (orders.size() >= 2) steady = std::abs(orders.back() - orders[orders.size() - 2]) <= kSteadySpread;
-  md << ". Within 1e-3 of the mean at n = 128: "
-     << (at128 ? met(at128->err_line <= 1e-3) + " (" + fmt("%.1e", at128->err_line) + ")" : std::string("**not measured**"))
-     << "; a steady order of at least 1.5: "
-     << (from128 && std::isfinite(lo) ? met(lo >= 1.5 && steady) + " (least order beyond n = 128: " + fmt("%.2f", lo) +
-                                            (steady ? ", the last two within " + fmt("%g", kSteadySpread) : ", the last two not within " + fmt("%g", kSteadySpread)) + ")"
-                                      : std::string("**not measured**"))
-     << ".\n";
+  md << " "
+     << (at128 ? words("time_to_accuracy.line_at128", {{"status", met(at128->err_line <= 1e-3)}, {"error", fmt("%.1e", at128->err_line)}})
+               : words("time_to_accuracy.line_at128_not_measured"))
+     << " "
+     << (from128 && std::isfinite(lo)
+             ? words(steady ? "time_to_accuracy.line_steady" : "time_to_accuracy.line_not_steady",
+                     {{"status", met(lo >= 1.5 && steady)}, {"least", fmt("%.2f", lo)}, {"spread", fmt("%g", kSteadySpread)}})
+             : words("time_to_accuracy.line_steady_not_measured"))
+     << "\n";
 }
 
 struct Repeated {
@@ -267,34 +279,38 @@ struct Timed {
 // kink carried than in the plain space, each on the coarsest grid that gets there, in one run.
 void kink_target(std::ostream& md, const std::vector<Run>& runs, const Config& kink, const Config& plain, const Timed& t) {
   const Run *k = fastest_to_both(runs, kink), *p = fastest_to_both(runs, plain);
-  md << "- Max w within 1e-9 and the force within 1e-8 at least 20 times sooner with the kink carried (D31) than in "
-        "the plain space: ";
   if (!k || !p)
-    md << "**not measured**: " << (k ? "the plain space" : p ? "the default" : "neither space") << " did not get there.\n";
+    md << words("time_to_accuracy.kink_not_measured", {{"which", k ? "the plain space" : p ? "the default" : "neither space"}})
+       << "\n";
   else
-    md << met(p->seconds >= 20 * k->seconds) << ": n = " << k->n << " in " << fmt("%.3g", k->seconds) << " s and "
-       << fmt("%.0f", k->peak_mib) << " MiB against n = " << p->n << " in " << fmt("%.3g", p->seconds) << " s and "
-       << fmt("%.0f", p->peak_mib) << " MiB, " << fmt("%.1f", p->seconds / k->seconds) << " times.\n";
+    md << words("time_to_accuracy.kink_target", {{"status", met(p->seconds >= 20 * k->seconds)},
+                                                 {"n", std::to_string(k->n)},
+                                                 {"seconds", fmt("%.3g", k->seconds)},
+                                                 {"mib", fmt("%.0f", k->peak_mib)},
+                                                 {"plain_n", std::to_string(p->n)},
+                                                 {"plain_seconds", fmt("%.3g", p->seconds)},
+                                                 {"plain_mib", fmt("%.0f", p->peak_mib)},
+                                                 {"ratio", fmt("%.1f", p->seconds / k->seconds)}})
+       << "\n";
   const double ratio = t.kink.median() / t.plain.median();
-  md << "- `plate -n 64` with the kink carried at most 1.3 times as long as in the plain space, medians of "
-     << t.kink.seconds.size() << " alternating runs: " << fmt("%.3g", t.kink.median()) << " s against "
-     << fmt("%.3g", t.plain.median()) << " s, " << fmt("%.2f", ratio) << " times: " << met(ratio <= 1.3) << ".\n";
+  md << words("time_to_accuracy.overhead_target", {{"runs", std::to_string(t.kink.seconds.size())},
+                                                   {"kink", fmt("%.3g", t.kink.median())},
+                                                   {"plain", fmt("%.3g", t.plain.median())},
+                                                   {"ratio", fmt("%.2f", ratio)},
+                                                   {"status", met(ratio <= 1.3)}})
+     << "\n";
 }
 
 std::string report(const std::vector<Run>& runs, const std::vector<Config>& configs, const std::map<std::string, double>& lim,
                    const Timed& t, int ratio_n) {
   const Repeated &part = t.part, &whole = t.whole, &series = t.series;
   std::ostringstream md;
-  md << "Generated by `build/time_to_accuracy` (`make bench`); timings are this machine's (2 cores) and vary between "
-        "runs. Each cell is the wall time of the whole process (`plate`, PETSc's SNESVI peer `peer_snesvi`, or gmsh and "
-        "FreeFem++; start, assembly, solve, output) on the coarsest grid of the sequence n = 8, 16, ... (FreeFEM: 4, 8, "
-        "... cells per quarter circle) whose answer lies within the stated relative distance of the plate's "
-        "answer (max w = " << fmt("%.13g", lim.at("max_w")) << ", total force = " << fmt("%.13g", lim.at("total_force"))
-     << ", from the rim-contact series, `rim_answer.csv`, relative error bars " << fmt("%.1e", lim.at("max_w_bar") / lim.at("max_w")) << " and "
-     << fmt("%.1e", lim.at("total_force_bar") / lim.at("total_force"))
-     << "). Only runs that exit with 0 (certified) count. Each configuration runs on finer grids while its next run, "
-        "predicted from the growth of its last two, would take at most " << fmt("%g", kBudgetSeconds) << " s: beyond "
-        "that a slower solver would only show itself slower; the default runs to its finest grid.\n\n";
+  md << words("time_to_accuracy.intro", {{"max_w", fmt("%.13g", lim.at("max_w"))},
+                                         {"force", fmt("%.13g", lim.at("total_force"))},
+                                         {"bar_w", fmt("%.1e", lim.at("max_w_bar") / lim.at("max_w"))},
+                                         {"bar_f", fmt("%.1e", lim.at("total_force_bar") / lim.at("total_force"))},
+                                         {"budget", fmt("%g", kBudgetSeconds)}})
+     << "\n\n";
   for (const auto& [err, key, title] : {std::tuple{&Run::err_w, "max_w", "max w"}, {&Run::err_f, "total_force", "total force"}}) {
     const double floor = lim.at(std::string(key) + "_bar") / lim.at(key);
     const double levels[] = {1e-4, 1e-6, 1e-8, 1e-9, 1e-10};
@@ -316,18 +332,22 @@ std::string report(const std::vector<Run>& runs, const std::vector<Config>& conf
     if (!never.empty()) md << " " << words("time_to_accuracy.never", {{"runs", never}});
     md << "\n\n";
   }
-  md << "**Targets**, measured in this run:\n\n";
+  md << words("targets.heading") << "\n\n";
   accuracy_target(md, runs, configs.front());
   kink_target(md, runs, configs[0], configs[1], t);
   line_target(md, runs, configs.front());
   const double ratio = whole.median() / part.median();
-  md << "- The default `plate` at n = " << ratio_n << " (a quarter of the plate, by its mirror lines) at least 4 times "
-        "faster than the whole-plate solve (`--symmetry none`), medians of " << part.seconds.size()
-     << " alternating runs: " << fmt("%.3g", part.median()) << " s against " << fmt("%.3g", whole.median()) << " s, "
-     << fmt("%.1f", ratio) << " times: " << met(ratio >= 4) << ".\n"
-     << "- The whole `plate --scheme semi-analytic` process (the series to its last settled digits, the premise "
-        "checked) in at most 50 ms: median of " << series.seconds.size() << " runs " << fmt("%.3g", 1000 * series.median())
-     << " ms: " << met(series.median() <= 0.05) << ".\n";
+  md << words("time_to_accuracy.mirror_target", {{"n", std::to_string(ratio_n)},
+                                                 {"runs", std::to_string(part.seconds.size())},
+                                                 {"part", fmt("%.3g", part.median())},
+                                                 {"whole", fmt("%.3g", whole.median())},
+                                                 {"ratio", fmt("%.1f", ratio)},
+                                                 {"status", met(ratio >= 4)}})
+     << "\n"
+     << words("time_to_accuracy.series_target", {{"runs", std::to_string(series.seconds.size())},
+                                                 {"ms", fmt("%.3g", 1000 * series.median())},
+                                                 {"status", met(series.median() <= 0.05)}})
+     << "\n";
   freefem_target(md, runs);
   return md.str();
 }
