@@ -176,11 +176,11 @@ results/%.svg: paper/figures/%.gp | deps
 results/%.png: paper/figures/%.gp | deps
 	gnuplot -e "fmt='png'; out='$@.tmp'" $< && mv $@.tmp $@
 
-bench: $(BENCH_ALL) ## speed against error up to n = 1024 with PETSc's SNESVI, time to accuracy with FreeFEM, micro-benchmarks (about 12 min)
+bench: $(BENCH_ALL) ## speed against error up to n = 1024 with PETSc's SNESVI, time to accuracy with FreeFEM, micro-benchmarks (about 8 min)
 
 # Timings differ on every run: these files are remade only when the programs change.
 $(BENCH) &: $(BUILD)/bench $(BUILD)/peer_snesvi $(PAPER_NUMBERS) results/rim_answer.csv
-	scripts/step.sh "results/speed_vs_error*: every solver and PETSc's SNESVI to n = 1024 in a process of its own" "8 min" $(BUILD)/bench --answer results/rim_answer.csv --out results
+	scripts/step.sh "results/speed_vs_error*: every solver and PETSc's SNESVI to n = 1024 in a process of its own" "5 min" $(BUILD)/bench --answer results/rim_answer.csv --out results
 
 results/micro_benchmarks.md: $(BUILD)/micro_bench
 	$(call say,"results/micro_benchmarks.md","1 min")
@@ -197,7 +197,7 @@ results/time_to_accuracy.svg results/time_to_accuracy.png: results/time_to_accur
 paper: results/paper.html ## the literate document: results/paper.html (self-contained, opens offline); remakes stale results first
 
 # A fresh clone's programs are newer than the results it carries, so `make paper` would remake
-# them all (about 25 minutes). This renders the document from the results as they are.
+# them all (about 17 minutes). This renders the document from the results as they are.
 document: $(BUILD)/prose_numbers $(BUILD)/render_report results/versions.csv | deps ## results/paper.html from the results/ present, remaking none of them (10 s)
 	$(BUILD)/prose_numbers --out results
 	$(render_paper)

@@ -114,8 +114,6 @@ Run freefem(const Case& s, int m, const std::string& work) {
   return run;
 }
 
-// To the digits round-off cannot reach (format.hpp), at most 12.
-
 // The error bar on the finest value of a sequence (error_bar.hpp), as a table cell.
 std::string bar_cell(const ErrorBar& b) {
   if (b.basis == "none") return "—";
@@ -151,15 +149,15 @@ std::string report(const std::vector<Run>& runs, int& failures) {
                                  : r.rows == &kRows[1] ? "points" : "periodic splines";
       const std::string space = r.rows && r.rows->kink ? (r.kinked ? "; kink carried" : "; plain (D31 does not fit)") : "";
       md << "| " << (!r.rows ? fmt("%.3g", r.h) : "1/" + std::to_string(static_cast<int>(std::lround(1 / r.h)))) << " | "
-         << (r.rows ? r.rows->name : "FreeFEM") << " | " << (r.certified ? "yes" : "**no**") << " | " << fmt_value(r.max_w, r.noise_w, 12) << " | " << fmt_value(r.force, r.noise_force, 12) << " | "
+         << (r.rows ? r.rows->name : "FreeFEM") << " | " << (r.certified ? "yes" : "**no**") << " | " << fmt_value(r.max_w, r.noise_w, 12, "nan") << " | " << fmt_value(r.force, r.noise_force, 12, "nan") << " | "
          << (std::isfinite(r.dip) ? fmt("%.1e", r.dip / kR) : std::string("—")) << " | " << layout << space << " |\n";
     }
     const ErrorBar a = finest_bar(ours);
     const ErrorBar b = error_bar(theirs);
     const double diff = std::abs(a.value - b.value), tol = a.bar + b.bar;
     md << "\nTable: " << words("liftoff.caption", {{"scene", s.name}}) << "\n\n"
-       << words("liftoff.verdict_default", {{"ours", fmt_value(a.value, ours_noise, 12)}, {"ours_bar", bar_cell(a)},
-                                            {"theirs", fmt_value(b.value, theirs_noise, 12)}, {"theirs_bar", bar_cell(b)},
+       << words("liftoff.verdict_default", {{"ours", fmt_value(a.value, ours_noise, 12, "nan")}, {"ours_bar", bar_cell(a)},
+                                            {"theirs", fmt_value(b.value, theirs_noise, 12, "nan")}, {"theirs_bar", bar_cell(b)},
                                             {"diff", fmt("%.1e", diff)}, {"judged", diff <= tol ? ", within" : ", **more than**"},
                                             {"tol", fmt_up(tol)}})
        << "\n\n";
@@ -167,7 +165,7 @@ std::string report(const std::vector<Run>& runs, int& failures) {
     // The same for `plate`'s default, which carries the kink on the grids it fits.
     const ErrorBar k = finest_bar(kinked);
     const double kdiff = std::abs(k.value - b.value), ktol = k.bar + b.bar;
-    md << words("liftoff.verdict_kink", {{"ours", fmt_value(k.value, kink_noise, 12)}, {"ours_bar", bar_cell(k)},
+    md << words("liftoff.verdict_kink", {{"ours", fmt_value(k.value, kink_noise, 12, "nan")}, {"ours_bar", bar_cell(k)},
                                          {"diff", fmt("%.1e", kdiff)}, {"judged", kdiff <= ktol ? ", within" : ", **more than**"},
                                          {"tol", fmt_up(ktol)}})
        << "\n\n";
@@ -221,7 +219,7 @@ int main(int argc, char** argv) {
     timings << "# liftoff: seconds per run (this machine, this run)\nscene,rows,n,seconds\n";
     for (const Run& r : runs) {
       csv << r.scene->key << ',' << (r.rows ? r.rows->key : "freefem") << ',' << r.n << ',' << fmt("%.6g", r.h) << ',' << (r.certified ? 1 : 0) << ','
-          << fmt_value(r.max_w, r.noise_w, 12) << ',' << fmt_value(r.force, r.noise_force, 12) << ','
+          << fmt_value(r.max_w, r.noise_w, 12, "nan") << ',' << fmt_value(r.force, r.noise_force, 12, "nan") << ','
           << (std::isfinite(r.dip) ? fmt("%.2e", r.dip) : std::string()) << ',' << r.arcs << ',' << r.points << ',' << r.exchanged << '\n';
       timings << r.scene->key << ',' << (r.rows ? r.rows->key : "freefem") << ',' << r.n << ',' << fmt("%.3g", r.seconds) << '\n';
     }

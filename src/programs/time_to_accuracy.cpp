@@ -279,9 +279,10 @@ struct Timed {
 // kink carried than in the plain space, each on the coarsest grid that gets there, in one run.
 void kink_target(std::ostream& md, const std::vector<Run>& runs, const Config& kink, const Config& plain, const Timed& t) {
   const Run *k = fastest_to_both(runs, kink), *p = fastest_to_both(runs, plain);
-  if (!k || !p)
-    md << words("time_to_accuracy.kink_not_measured", {{"which", k ? "the plain space" : p ? "the default" : "neither space"}})
-       << "\n";
+  if (!k && !p)
+    md << words("time_to_accuracy.kink_neither") << "\n";
+  else if (!k || !p)
+    md << words("time_to_accuracy.kink_not_measured", {{"which", k ? "the plain space" : "the default"}}) << "\n";
   else
     md << words("time_to_accuracy.kink_target", {{"status", met(p->seconds >= 20 * k->seconds)},
                                                  {"n", std::to_string(k->n)},
