@@ -83,6 +83,12 @@ std::vector<Quantity> quantities(const Scene& scene) {
   return q;
 }
 
+// A number as an ostream prints it by default (six significant digits), for the scene's given values.
+std::string as_text(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
 std::string run_value(const CheckValues& r, double v) { return fmt_value(v, noise(r, v), 10); }
 
 Extrapolation fit(const std::vector<CheckValues>& runs, const Quantity& q) {
@@ -224,28 +230,14 @@ void runs_table(std::ostream& md, const Runs& runs, const std::vector<const std:
 void describe(std::ostream& md, const Setup& u, const Runs& runs) {
   const Cylinder& s = *u.scene.cylinder;
   md << "# Cross-code check: this code against FreeFEM\n\n"
-     << "Made by `make crosscheck` (`build/crosscheck`); numbers in `crosscheck.csv`, run times in "
-        "`crosscheck_timings.csv`.\n\n"
-     << "Two scenes, each solved exactly (no eps: the discrete obstacle problem itself, with a certificate) on "
-        "grids that halve: the paper's square by both codes, and a clamped disk on a flat punch, which has a "
-        "closed form, by FreeFEM.\n\n"
+     << words("crosscheck.intro") << "\n\n"
+     << words("crosscheck.scenes") << "\n\n"
      << "## The paper's square, with the contact circle resolved\n\n"
-     << "The paper's problem (unit square, f = 0, obstacle R = " << s.height << " on the closed disk of radius "
-     << s.radius << " about (" << s.cx << ", " << s.cy << ")), where the plate touches the obstacle along its rim:\n\n"
-     << "* **this code**: Bogner-Fox-Schmit bicubics on n by n squares (a quarter of them solved, by the square's "
-        "mirror lines), edge sampling (the constraint averaged against cubic B-splines of the angle along the circle, "
-        "and at the nodes inside it), the exact dual active-set solver with refinement;\n"
-     << "* **FreeFEM** (`reference/contact_hct.edp`): HCT (Hsieh-Clough-Tocher) C^1 triangles on structured gmsh "
-        "meshes (`reference/square_with_circle.geo`, an O-grid with 4, 8, 16, ... cells along each quarter of the circle, "
-        "so that mesh vertices lie on it), the constraint at every mesh vertex in the closed disk, FreeFEM's "
-        "primal-dual active-set method; its own assembly, quadrature (`tripleQF(qf5pT)`) and sparse solver.\n\n"
-     << "Both sample the contact line itself, so max w and the total force converge at a steady order in both "
-        "(the orders below). The line load q is the multiplier per unit length on the circle: ours the spline of "
-        "the edge rows (D12), a function of the angle; for FreeFEM, the vertex forces over their arcs, fitted by "
-        "cos(4 k theta), k = 0 to 3, since point values scatter. The mean line force is the total force over "
-        "the circle's length. Digits are printed down to 10 times each code's round-off bound (for this code the size "
-        "of the refinement's last correction (D22), u n^3 relative for an unrefined solve, u the unit round-off, see `exact_solve_roundoff`; "
-     << kFreefemRoundoffRule << " for FreeFEM).\n\n";
+     << words("crosscheck.square_intro", {{"R", as_text(s.height)}, {"radius", as_text(s.radius)}, {"cx", as_text(s.cx)}, {"cy", as_text(s.cy)}})
+     << "\n\n"
+     << words("crosscheck.this_code") << "\n"
+     << words("crosscheck.freefem") << "\n\n"
+     << words("crosscheck.sampling", {{"freefem_rule", kFreefemRoundoffRule}}) << "\n\n";
   runs_table(md, runs, {&runs.ff, &runs.edge}, true,
              words("crosscheck.square_runs_caption"));
 }
@@ -283,14 +275,10 @@ bool square_verdict(std::ostream& md, std::ostream& agreement, const Setup& u, c
   *targets_met = true;
   for (const auto* ser : {&runs.ff, &runs.edge})
     for (const auto& r : *ser) all_certified = all_certified && r.certified;
-  md << "\n### Verdict\n\nEach code's limit carries its own error bar: where its order is steady, the distance between "
-        "the Richardson limits of its last two triples of grids; elsewhere its last increment. Neither is taken "
-        "below what round-off can change in it. The codes agree when their limits differ by at most the sum of "
-        "the two bars; that sum is the tolerance below, set by the two codes' convergence, not chosen. Targets:";
+  md << "\n### Verdict\n\n" << words("crosscheck.verdict_intro");
   for (const Quantity& q : quantities(u.scene))
-    if (q.target > 0) md << " the tolerance at most " << fmt("%.0e", q.target) << " of " << q.name << ";";
-  md << " the target is met only where both orders are steady. (The check point on the circle is left out: both "
-        "codes hold w = R there.)\n\n"
+    if (q.target > 0) md << " " << words("crosscheck.target", {{"target", fmt("%.0e", q.target)}, {"quantity", q.name}});
+  md << " " << words("crosscheck.verdict_intro_end") << "\n\n"
         "| quantity | FreeFEM limit | BFS limit | difference | tolerance | tolerance / value | target | agree |\n"
         "|---|---|---|---|---|---|---|---|\n";
   for (const Quantity& q : quantities(u.scene)) {
@@ -332,9 +320,7 @@ bool against_series(std::ostream& md, const Setup& u, const Runs& runs) {
       {"mean_line_force", {s.q_cos.at(0), y.bar_force / (2 * M_PI * u.scene.cylinder->radius)}},
       {"q_0", {s.q(0), y.bar_q0}},
       {"q_pi_4", {s.q(M_PI / 4), y.bar_q45}}};
-  md << "\n### Against the rim-contact series\n\nThe plate's answer without a grid (`rim_series.md`, section "
-        "\"A yardstick without a grid\" of the document), and each code's limit minus it. A limit passes when "
-        "that difference is at most its own bar plus the series' bar.\n\n"
+  md << "\n### Against the rim-contact series\n\n" << words("crosscheck.series_intro") << "\n\n"
         "| quantity | series | FreeFEM limit minus series | within its bar | BFS limit minus series | within its bar |\n"
         "|---|---|---|---|---|---|\n";
   bool all = y.premise.holds;
@@ -357,8 +343,7 @@ bool against_series(std::ostream& md, const Setup& u, const Runs& runs) {
   md << "\nTable: " << words("crosscheck.series_caption") << "\n";
   md << "\n" << words(all ? "crosscheck.series_hold" : "crosscheck.series_miss") << "\n";
   // The line load point by point: no limit is taken, each grid's q against the series' q.
-  md << "\nThe line load point by point, on each grid: the largest distance of its q from the series' q, over the "
-        "mean load (ours: the spline at 720 angles and its knots; FreeFEM: each circle vertex's force over its arc).\n\n"
+  md << "\n" << words("crosscheck.line_load_intro") << "\n\n"
         "| code | grid | line load, pointwise | order |\n|---|---|---:|---:|\n";
   for (const auto* ser : {&runs.ff, &runs.edge}) {
     double before = NAN;
@@ -375,11 +360,7 @@ bool against_series(std::ostream& md, const Setup& u, const Runs& runs) {
 
 // Gauss and nodal sampling: the paper's two readings, which do not resolve the contact line.
 void record(std::ostream& md, const Setup& u, const Runs& runs) {
-  md << "\n## The record: Gauss and nodal sampling\n\n"
-        "This code with the constraint at the Gauss points of the cells in the disk, or at the nodes (the paper's two "
-        "readings of (8)), exact solves. Neither samples the circle where the plate touches, so the circle cuts each "
-        "grid differently and the values do not converge at a steady order; they are kept as the record of what "
-        "does not converge cleanly.\n\n";
+  md << "\n## The record: Gauss and nodal sampling\n\n" << words("crosscheck.record_intro") << "\n\n";
   runs_table(md, runs, {&runs.gauss, &runs.nodes}, false,
              words("crosscheck.record_runs_caption"));
   convergence(md, u, runs, {&runs.gauss, &runs.nodes},
@@ -392,13 +373,9 @@ bool disk_verdict(std::ostream& md, const Setup& u, const Runs& runs) {
   const DiskPunch& d = u.disk;
   const double w0 = d.centre(), force = d.total_force();
   md << "\n## A clamped disk on a flat punch: FreeFEM against the closed form\n\n"
-     << "A clamped circular plate of radius a = " << d.a << " lifted by a flat circular punch of radius b = " << d.b
-     << " and height R = " << d.R << ", f = 0. It touches the punch along the rim only, and its deflection is the "
-        "radial solution (D23)-(D25): w(0) = " << fmt("%.12g", w0) << ", total force " << fmt("%.12g", force)
-     << ". FreeFEM solves it on structured gmsh meshes of the disk (`reference/disk_with_punch.geo`: the punch's "
-        "circle embedded, 4, 8, 16, ... cells along each quarter of it) with the same script as the square. Squares cannot "
-        "mesh a disk, so this checks the FreeFEM code on its own, and so makes the square's comparison worth more. "
-        "The clamped edge is a polygon through the mesh vertices, whose error is of order h^2.\n\n"
+     << words("crosscheck.disk_intro", {{"a", as_text(d.a)}, {"b", as_text(d.b)}, {"R", as_text(d.R)},
+                                         {"w0", fmt("%.12g", w0)}, {"force", fmt("%.12g", force)}})
+     << "\n\n"
      << "| grid | unknowns | w(0) | w(0) minus closed form | total force | force minus closed form |\n"
         "|---|---|---|---|---|---|\n";
   bool certified = true;
