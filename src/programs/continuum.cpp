@@ -217,12 +217,7 @@ std::string sampling_title(const std::string& k) {
 
 std::string markdown(const Study& s) {
   std::ostringstream o;
-  o << "Made by `make continuum` (`build/continuum`); numbers in `continuum.csv`, errors in `continuum_error.csv`, "
-       "the line load in `continuum_q.csv`, run times in `continuum_timings.csv`.\n\n"
-    << answer(s) << "\n"
-    << "Every run is the exact discrete solution (no eps), certified to 1e-10. Edge sampling puts the constraint on "
-       "the rim, where the plate touches, and at the nodes inside it; Gauss and nodal sampling are the paper's two "
-       "readings of (8).\n\n";
+  o << words("continuum.intro") << "\n\n" << answer(s) << "\n" << words("continuum.runs") << "\n\n";
   for (const std::string& k : s.kinds) {
     // A quantity no run of this sampling has (the line load off the rim) is left out, not shown as n/a.
     std::vector<const Quantity*> shown;

@@ -102,8 +102,7 @@ void bad_input(std::ostream& md, const std::string& plate, const std::string& ca
        << (ok ? "" : " **unexpected**") << " | " << table_cell(r.output) << " |\n";
   }
   md << "\nTable: " << words("hard_cases.bad_input_caption") << "\n";
-  md << "\n" << as_expected << " of " << n << " cases behave as expected (status, a message naming the input, and an "
-     << "output file only for status 3, where it says it did not converge).\n\n";
+  md << "\n" << words("hard_cases.bad_input_summary", {{"ok", std::to_string(as_expected)}, {"n", std::to_string(n)}}) << "\n\n";
 }
 
 void interrupted(std::ostream& md, const std::string& plate, const std::string& scratch) {
@@ -115,10 +114,7 @@ void interrupted(std::ostream& md, const std::string& plate, const std::string& 
 
 // Each eps alone on the paper's problem, nodal and Gauss sampling, against an eps-free reference.
 void small_eps(std::ostream& md, const Context& c) {
-  md << "### Small eps\n\nThe paper's problem, each eps alone (no continuation) from w = 0, tol = 1e-8, at most "
-        "20000 iterations. A run is certified when its steps met tol and the error bound from the residual of (2a) "
-        "is within tol. \"predicted (5a)\" is 1 + ln(first step / tol) / ln(1 + eps lambda_1) with the published "
-        "lambda_1 = " << fmt("%.5f", c.lambda1) << ": Theorem 2 says (5a) needs no more.\n\n";
+  md << "### Small eps\n\n" << words("hard_cases.small_eps_intro", {{"lambda1", fmt("%.5f", c.lambda1)}}) << "\n\n";
   {
     const Problem p = make_problem(c.scene, make_grid(16), SamplingSpec{SamplingKind::Nodes});
     const ExactResult exact = solve_exact(p, ExactOptions{});
@@ -136,9 +132,10 @@ void small_eps(std::ostream& md, const Context& c) {
 
 // An obstacle at one node acts as a point load: w_c / P against Timoshenko's coefficient.
 void point_obstacle(std::ostream& md, const Context& c) {
-  md << "### A point obstacle\n\nHeight 0.01 at the centre node only, f = 0, exact-constraint solver. The obstacle "
-        "acts as a point load P, so w_c / P must approach the published coefficient " << c.point
-     << " (Timoshenko & Woinowsky-Krieger).\n\n| n | P | w_c / P | relative difference |\n"
+  std::ostringstream coefficient;
+  coefficient << c.point;
+  md << "### A point obstacle\n\n" << words("hard_cases.point_intro", {{"coefficient", coefficient.str()}})
+     << "\n\n| n | P | w_c / P | relative difference |\n"
         "|---:|---:|---:|---:|\n";
   for (int n : {16, 32, 64, 128}) {
     const Grid g = make_grid(n);
@@ -159,17 +156,18 @@ void point_obstacle(std::ostream& md, const Context& c) {
 
 // Contact on an area: where it starts (the published sag), and how the active set grows with n.
 void flat_support(std::ostream& md, const Context& c) {
-  md << "\n### A flat support: contact on an area\n\nf = -q, phi = -R everywhere (q = 1), exact-constraint solver. "
-        "The free plate sags by " << c.sag << " q at the centre (published), so contact must start when R drops below "
-        "that; inside the contact area w = -R, so Lap^2 w = 0 and the force density equals q.\n\n";
+  std::ostringstream sag;
+  sag << c.sag;
+  md << "\n### A flat support: contact on an area\n\n" << words("hard_cases.flat_intro", {{"sag", sag.str()}}) << "\n\n";
   for (double factor : {1.01, 0.99}) {
     Problem sag = make_problem(field_scene(1, 1, uniform(-c.sag * factor), uniform(-1)), make_grid(32), SamplingSpec{SamplingKind::Nodes});
     const ExactResult r = solve_sequenced(sag, ExactOptions{});
-    md << "- n = 32, R = " << fmt("%.2f", factor) << " x the published sag: " << members(r.active) << " touching nodes"
-       << (r.converged ? "" : " (not converged)") << ".\n";
+    md << words("hard_cases.flat_sag", {{"factor", fmt("%.2f", factor)},
+                                        {"touching", std::to_string(members(r.active))},
+                                        {"converged", r.converged ? "" : " (not converged)"}})
+       << "\n";
   }
-  md << "\nR = 5e-4, grid-sequenced (the default: each grid starts from the contact set of the one twice as coarse) "
-        "and, up to n = 128, from an empty set:\n\n| n | touching nodes | ratio to the coarser grid | force density at "
+  md << "\n" << words("hard_cases.flat_sequenced") << "\n\n| n | touching nodes | ratio to the coarser grid | force density at "
         "the centre | total force | PDAS its | factorisations | cold start: PDAS its |\n"
         "|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   std::string cold_its, cold_ns;
@@ -200,18 +198,12 @@ void flat_support(std::ostream& md, const Context& c) {
     previous = members(r.active);
   }
   md << "\nTable: " << words("hard_cases.flat_caption") << "\n";
-  md << "\nPer halving of h the touching nodes of an area grow 4 times, those of a curve 2: compare the ratio column. "
-        "The force density at the centre is to be compared with q = 1. From an empty set the primal-dual iteration needs "
-     << cold_its << " iterations on n = " << cold_ns << ", most with their own factorisation; started from the coarser grid's contact set "
-        "it needs the PDAS its above (run times in hard_cases_timings.csv).\n\n";
+  md << "\n" << words("hard_cases.flat_after", {{"cold_its", cold_its}, {"cold_ns", cold_ns}}) << "\n\n";
 }
 
 // Sixteen bumps: many contact regions, the exact solver against (3a).
 void many_regions(std::ostream& md, const Context&) {
-  md << "### Many contact regions\n\nSixteen bumps, phi = -1 + 0.99 (sin 4 pi x sin 4 pi y)^4 (tops at -0.01), "
-        "under f = -q, n = 64, exact-constraint solver; regions are connected groups of touching nodes (neighbours "
-        "along grid lines and diagonals). The regions come in the symmetry orbits of the square (4 inner, 8 edge, "
-        "4 corner bumps). (3a) at eps = 1e-10 is a second algorithm for the same answer.\n\n"
+  md << "### Many contact regions\n\n" << words("hard_cases.bumps_intro") << "\n\n"
         "| q | regions | touching nodes | certificate | (3a) certified | (3a) regions | (3a) vs exact | eps max lambda |\n"
         "|---:|---:|---:|---:|:---:|---:|---:|---:|\n";
   for (double q : {100.0, 300.0, 1000.0}) {
@@ -234,11 +226,12 @@ void just_touching_obstacle(std::ostream& md, const Context&) {
   const JustTouching s = just_touching(32);
   const Problem& p = s.touching;
   const ExactResult r = solve_exact(p, ExactOptions{});
-  md << "\n### An obstacle that just touches\n\nf = 1 lifts the free plate to w_free; an obstacle at the centre "
-        "node of exactly the free plate's height there is touched with zero force (n = 32): total force "
-     << fmt("%.1e", p.sampling.weights.dot(r.lambda)) << " (load " << fmt("%.1e", s.free_plate.F.lpNorm<1>())
-     << "), max |w - w_free| = " << fmt("%.1e", (r.w - s.w_free).lpNorm<Eigen::Infinity>()) << ", certificate "
-     << fmt("%.1e", r.certificate.worst()) << ".\n\n";
+  md << "\n### An obstacle that just touches\n\n"
+     << words("hard_cases.just_touching", {{"force", fmt("%.1e", p.sampling.weights.dot(r.lambda))},
+                                           {"load", fmt("%.1e", s.free_plate.F.lpNorm<1>())},
+                                           {"difference", fmt("%.1e", (r.w - s.w_free).lpNorm<Eigen::Infinity>())},
+                                           {"certificate", fmt("%.1e", r.certificate.worst())}})
+     << "\n\n";
 }
 
 // The paper's problem at n = fine: the exact solver and both schemes, and (5a)'s rate.
@@ -246,9 +239,9 @@ void million_unknowns(std::ostream& md, const Context& c) {
   // The quarter the square's mirror lines leave is the same discrete problem (mirror.hpp), for the
   // penalty schemes as for the exact solver: the energy and the penalty halve at each line alike.
   const Grid whole = make_grid(c.fine), quarter = part_of(whole, Mirrors{true, true});
-  md << "### A million unknowns (n = " << c.fine << ")\n\nThe paper's problem, nodal sampling, " << whole.unknowns()
-     << " unknowns, solved on the quarter of the plate that its mirror lines leave (" << quarter.unknowns()
-     << " unknowns; the same discrete problem, mirror.hpp).\n\n"
+  md << "### A million unknowns (n = " << c.fine << ")\n\n"
+     << words("hard_cases.million_intro", {{"unknowns", std::to_string(whole.unknowns())}, {"quarter", std::to_string(quarter.unknowns())}})
+     << "\n\n"
         "| solver | settings | certified | iterations | factorisations | error bound or certificate | "
         "vs exact |\n|---|---|:---:|---:|---:|---:|---:|\n";
   Problem p = make_problem(c.scene, quarter, SamplingSpec{SamplingKind::Nodes});
@@ -272,20 +265,20 @@ void million_unknowns(std::ostream& md, const Context& c) {
     *c.timings << "million unknowns," << c.fine << "," << to_string(s) << "," << fmt("%.3g", r.seconds) << "\n";
   }
   md << "\nTable: " << words("hard_cases.million_caption", {{"n", std::to_string(c.fine)}}) << "\n";
-  md << "\nAt the same eps the penalised solution is further from the exact one here than on n = 16 (the "
-        "nodal table above): the contact force concentrates on the rim, and its nodal density grows as h "
-        "falls.\n";
+  md << "\n" << words("hard_cases.million_after") << "\n";
   const Problem free = make_problem(field_scene(quarter.whole_lx(), quarter.whole_ly(), uniform(-1), uniform(1)), quarter, SamplingSpec{SamplingKind::Nodes});
   const double eps = 1e-3;
   const std::vector<double> steps = linear_step_norms(free, eps, 30);
   const double factor = asymptotic_factor(steps), measured = (1 / factor - 1) / eps;
-  md << "\nThe linear scheme's rate. Without contact (f = 1, phi = -1) at eps = 1e-3, steps (from the symmetric start "
-        "w = 0, so the slowest mode is the first eigenmode, which is symmetric) shrink by "
-     << fmt("%.9f", factor) << " per iteration, which is 1/(1 + eps lambda) with lambda = " << fmt("%.4f", measured)
-     << "; the published first eigenvalue is " << fmt("%.5f", c.lambda1) << " (relative difference "
-     << fmt("%.1e", (measured - c.lambda1) / c.lambda1) << "). On the paper's problem, in the (5a) run above, the slowest of its "
-     << linear_steps.size() << " steps (those above 1e-6 of the first) shrank by " << fmt("%.6f", slowest_factor(linear_steps, 0.0)) << ", within Theorem 2's bound "
-     << fmt("%.6f", 1 / (1 + 1e-4 * c.lambda1)) << ".\n\n";
+  md << "\n"
+     << words("hard_cases.linear_rate", {{"factor", fmt("%.9f", factor)},
+                                         {"measured", fmt("%.4f", measured)},
+                                         {"lambda1", fmt("%.5f", c.lambda1)},
+                                         {"difference", fmt("%.1e", (measured - c.lambda1) / c.lambda1)},
+                                         {"steps", std::to_string(linear_steps.size())},
+                                         {"slowest", fmt("%.6f", slowest_factor(linear_steps, 0.0))},
+                                         {"bound", fmt("%.6f", 1 / (1 + 1e-4 * c.lambda1))}})
+     << "\n\n";
 }
 
 // The 3 x 3 case on which plain primal-dual active sets cycle, and the fallback that does not.
@@ -306,9 +299,8 @@ void cycling_active_set(std::ostream& md, const Context&) {
 // Every line of the bad-input list, and an interrupted run.
 void bad_inputs(std::ostream& md, const Context& c) {
   md << "<!-- Written by build/hard_cases (make all); do not edit. -->\n\n"
-        "### Bad input\n\nEvery line of `tests/bad_input.tsv`, run through `plate -q` (with `--json` to a scratch "
-        "file). Status 2 is bad input, 3 not converged (the outputs are written and say so), 4 another failure. "
-        "The same list is a test in `make test`.\n\n";
+        "### Bad input\n\n"
+     << words("hard_cases.bad_input_intro") << "\n\n";
   bad_input(md, c.plate, c.cases, c.scratch);
   md << "**An interrupted run.** ";
   interrupted(md, c.plate, c.scratch);

@@ -130,7 +130,7 @@ ErrorBar finest_bar(const std::vector<double>& values) {
 // against FreeFEM's within the sum of the bars. `failures` counts uncertified runs and disagreements.
 std::string report(const std::vector<Run>& runs, int& failures) {
   std::ostringstream md;
-  md << "Made by `build/liftoff` (`make liftoff`); numbers in `liftoff.csv`.\n\n";
+  md << words("liftoff.intro") << "\n\n";
   failures = 0;
   for (const Case& s : kScenes) {
     md << "### " << s.name << "\n\n| h | rows | certified | max w | total force | dip / R | layout |\n|---|---|:---:|---:|---:|---:|---|\n";
