@@ -247,8 +247,8 @@ comma := ,
 empty :=
 space := $(empty) $(empty)
 
-check-results: build ## rebuild every deterministic table into build/check-results and compare it with results/ (about 20 min)
-	$(call say,"check-results: $(CHECKED_DRIVERS) rebuilt and compared with results/","20 min")
+check-results: build ## rebuild every deterministic table into build/check-results and compare it with results/ (about 9 min)
+	$(call say,"check-results: $(CHECKED_DRIVERS) rebuilt and compared with results/","9 min")
 	@rm -rf $(CHECK_DIR); status=0; \
 	for spec in $(foreach d,$(CHECKED_DRIVERS),$(d):$(subst $(space),$(comma),$(CHECKED_$(d)))); do \
 	  d=$${spec%%:*}; files=$$(echo "$${spec#*:}" | tr , ' '); \
