@@ -83,12 +83,6 @@ std::vector<Quantity> quantities(const Scene& scene) {
   return q;
 }
 
-// A number as an ostream prints it by default (six significant digits), for the scene's given values.
-std::string as_text(double v) {
-  std::ostringstream o;
-  o << v;
-  return o.str();
-}
 std::string run_value(const CheckValues& r, double v) { return fmt_value(v, noise(r, v), 10); }
 
 Extrapolation fit(const std::vector<CheckValues>& runs, const Quantity& q) {
@@ -233,7 +227,7 @@ void describe(std::ostream& md, const Setup& u, const Runs& runs) {
      << words("crosscheck.intro") << "\n\n"
      << words("crosscheck.scenes") << "\n\n"
      << "## The paper's square, with the contact circle resolved\n\n"
-     << words("crosscheck.square_intro", {{"R", as_text(s.height)}, {"radius", as_text(s.radius)}, {"cx", as_text(s.cx)}, {"cy", as_text(s.cy)}})
+     << words("crosscheck.square_intro", {{"R", fmt("%g", s.height)}, {"radius", fmt("%g", s.radius)}, {"cx", fmt("%g", s.cx)}, {"cy", fmt("%g", s.cy)}})
      << "\n\n"
      << words("crosscheck.this_code") << "\n"
      << words("crosscheck.freefem") << "\n\n"
@@ -373,7 +367,7 @@ bool disk_verdict(std::ostream& md, const Setup& u, const Runs& runs) {
   const DiskPunch& d = u.disk;
   const double w0 = d.centre(), force = d.total_force();
   md << "\n## A clamped disk on a flat punch: FreeFEM against the closed form\n\n"
-     << words("crosscheck.disk_intro", {{"a", as_text(d.a)}, {"b", as_text(d.b)}, {"R", as_text(d.R)},
+     << words("crosscheck.disk_intro", {{"a", fmt("%g", d.a)}, {"b", fmt("%g", d.b)}, {"R", fmt("%g", d.R)},
                                          {"w0", fmt("%.12g", w0)}, {"force", fmt("%.12g", force)}})
      << "\n\n"
      << "| grid | unknowns | w(0) | w(0) minus closed form | total force | force minus closed form |\n"
@@ -423,9 +417,7 @@ bool uniform_load(std::ostream& md, const Setup& u, const Runs& runs) {
   // The error of a value that converges at least linearly is at most its last increment.
   const bool ok = std::abs(runs.ff_uniform.back() - published) <= last_increment(runs.ff_uniform) + 5e-9 &&
                   std::abs(runs.our_uniform.back() - published) <= last_increment(runs.our_uniform) + 5e-9;
-  std::ostringstream value;
-  value << published;
-  md << "\n" << words(ok ? "crosscheck.uniform_within" : "crosscheck.uniform_not_within", {{"published", value.str()}}) << "\n";
+  md << "\n" << words(ok ? "crosscheck.uniform_within" : "crosscheck.uniform_not_within", {{"published", fmt("%g", published)}}) << "\n";
   return ok;
 }
 

@@ -78,9 +78,7 @@ std::string mesh_markdown(const std::vector<Point>& pts, double R) {
     md << "| 1/" << p.n << " | " << to_string(p.kind) << " | " << fmt("%.5g", p.max_xi) << " | "
        << fmt("%.5g", p.max_xi / p.n) << " | " << fmt("%.5g", p.max_m12) << " | " << fmt("%.6f", p.max_w) << " | "
        << fmt("%.5g", p.force) << " | " << fmt("%.5g", p.force_per_length) << " |\n";
-  std::ostringstream r;
-  r << R;
-  md << "\nTable: " << words("fig2.mesh_caption", {{"R", r.str()}}) << "\n";
+  md << "\nTable: " << words("fig2.mesh_caption", {{"R", fmt("%g", R)}}) << "\n";
   return md.str();
 }
 

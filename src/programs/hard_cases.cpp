@@ -132,9 +132,7 @@ void small_eps(std::ostream& md, const Context& c) {
 
 // An obstacle at one node acts as a point load: w_c / P against Timoshenko's coefficient.
 void point_obstacle(std::ostream& md, const Context& c) {
-  std::ostringstream coefficient;
-  coefficient << c.point;
-  md << "### A point obstacle\n\n" << words("hard_cases.point_intro", {{"coefficient", coefficient.str()}})
+  md << "### A point obstacle\n\n" << words("hard_cases.point_intro", {{"coefficient", fmt("%g", c.point)}})
      << "\n\n| n | P | w_c / P | relative difference |\n"
         "|---:|---:|---:|---:|\n";
   for (int n : {16, 32, 64, 128}) {
@@ -156,9 +154,7 @@ void point_obstacle(std::ostream& md, const Context& c) {
 
 // Contact on an area: where it starts (the published sag), and how the active set grows with n.
 void flat_support(std::ostream& md, const Context& c) {
-  std::ostringstream sag;
-  sag << c.sag;
-  md << "\n### A flat support: contact on an area\n\n" << words("hard_cases.flat_intro", {{"sag", sag.str()}}) << "\n\n";
+  md << "\n### A flat support: contact on an area\n\n" << words("hard_cases.flat_intro", {{"sag", fmt("%g", c.sag)}}) << "\n\n";
   for (double factor : {1.01, 0.99}) {
     Problem sag = make_problem(field_scene(1, 1, uniform(-c.sag * factor), uniform(-1)), make_grid(32), SamplingSpec{SamplingKind::Nodes});
     const ExactResult r = solve_sequenced(sag, ExactOptions{});
