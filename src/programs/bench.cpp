@@ -28,6 +28,7 @@
 #include "published.hpp"
 #include "schemes.hpp"
 #include "stopwatch.hpp"
+#include "verdict.hpp"
 #include "words.hpp"
 
 using namespace plate;
@@ -238,7 +239,6 @@ std::string csv(const std::vector<Outcome>& outcomes, const std::map<int, const 
   return o.str();
 }
 
-std::string met(bool b) { return b ? "**met**" : "**not met**"; }
 
 using ByN = std::map<int, const Outcome*>;
 
@@ -338,7 +338,7 @@ void peer_target(std::ostream& md, const std::vector<Outcome>& outcomes, const B
                  {"peer", fmt("%.3g", fastest->v.at("seconds"))},
                  {"config", fastest->job.solver.substr(7)},
                  {"ratio", fmt("%.1f", ratio)},
-                 {"status", met(ratio >= 3)}};
+                 {"status", target_status(ratio >= 3)}};
     if (!certified)
       v.insert(v.end(), {{"cert", fmt("%.1e", fastest->v.at("certificate"))},
                          {"our_cert", fmt("%.1e", e->second->v.at("certificate"))},
@@ -365,12 +365,12 @@ void targets(std::ostream& md, const ByN& exact_at, const ByN& baseline_at, int 
     md << words("bench.target_512", {{"ours", fmt("%.3g", e512->second->v.at("seconds"))},
                                      {"baseline", fmt("%.3g", baseline_seconds(*b512->second))},
                                      {"ratio", fmt("%.2f", ratio)},
-                                     {"status", met(ratio <= 3)},
-                                     {"aim", met(ratio <= 2)},
+                                     {"status", target_status(ratio <= 3)},
+                                     {"aim", target_status(ratio <= 2)},
                                      {"cert", fmt("%.1e", cert)},
-                                     {"cert_status", met(cert <= 1e-10)},
+                                     {"cert_status", target_status(cert <= 1e-10)},
                                      {"mib", fmt("%.0f", e512->second->peak_mib)},
-                                     {"mib_status", met(e512->second->peak_mib < 4096)}})
+                                     {"mib_status", target_status(e512->second->peak_mib < 4096)}})
        << "\n";
   } else {
     md << words("bench.not_run", {{"n", "512"}, {"max", std::to_string(max_exact)}}) << "\n";
@@ -381,7 +381,7 @@ void targets(std::ostream& md, const ByN& exact_at, const ByN& baseline_at, int 
                                       {"seconds", fmt("%.3g", e1024->second->v.at("seconds"))},
                                       {"mib", fmt("%.0f", e1024->second->peak_mib)},
                                       {"gib", fmt("%.2f", e1024->second->peak_mib / 1024)},
-                                      {"status", met(e1024->second->peak_mib < 24 * 1024)}})
+                                      {"status", target_status(e1024->second->peak_mib < 24 * 1024)}})
        << "\n";
   else
     md << words("bench.not_run", {{"n", "1024"}, {"max", std::to_string(max_exact)}}) << "\n";
@@ -394,7 +394,7 @@ void targets(std::ostream& md, const ByN& exact_at, const ByN& baseline_at, int 
     for (size_t i = 0; i < N.size(); ++i) per_unknown += (i ? ", " : "") + fmt("%.2g", T[i] / N[i] * 1e9) + " ns";
     md << words("bench.assembly_target", {{"slope", fmt("%.2f", slope)},
                                           {"max", std::to_string(max_baseline)},
-                                          {"status", met(slope < 1.15)},
+                                          {"status", target_status(slope < 1.15)},
                                           {"per_unknown", per_unknown}})
        << "\n";
   }

@@ -22,6 +22,7 @@
 #include "published.hpp"
 #include "rim_contact.hpp"
 #include "stopwatch.hpp"
+#include "verdict.hpp"
 #include "words.hpp"
 
 using namespace plate;
@@ -170,14 +171,14 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<SceneCase>&
     const Orders w = orders_between(rows, c.key, "kink", &Row::err_w, lo, hi), f = orders_between(rows, c.key, "kink", &Row::err_f, lo, hi);
     const bool met = w.count >= 3 && f.count >= 3 && w.least >= 3.8 && f.least >= 3.8;
     o << words("kink_study.order_target", {{"scene", c.name}, {"lo", std::to_string(lo)}, {"hi", std::to_string(hi)},
-                                           {"status", met ? "**met**" : "**not met**"},
+                                           {"status", target_status(met)},
                                            {"least_w", fmt("%.2f", w.least)}, {"least_f", fmt("%.2f", f.least)}})
       << "\n";
   }
   for (const Row& r : rows)
     if (r.scene == cases.front().key && r.space == "kink" && r.n == 128)
       o << words("kink_study.line_load_target", {{"scene", cases.front().name},
-                                                 {"status", r.err_line <= 1e-4 ? "**met**" : "**not met**"},
+                                                 {"status", target_status(r.err_line <= 1e-4)},
                                                  {"error", fmt("%.1e", r.err_line)}})
         << "\n";
   return o.str();

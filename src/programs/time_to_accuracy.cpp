@@ -29,6 +29,7 @@
 #include "rim_contact.hpp"
 #include "rim_report.hpp"
 #include "stopwatch.hpp"
+#include "verdict.hpp"
 #include "words.hpp"
 
 using namespace plate;
@@ -159,7 +160,6 @@ bool ours(const Config& c) { return !c.freefem && c.peer_method.empty(); }
 bool ours_whole(const Config& c) { return ours(c) && c.args.find("--symmetry none") != std::string::npos; }
 bool freefem(const Config& c) { return c.freefem; }
 
-std::string met(bool b) { return b ? "**met**" : "**not met**"; }
 
 // Target (issue 42): at 1e-6 and 1e-8 relative in max w, at least 5 times faster than FreeFEM like
 // for like: FreeFEM meshes the whole plate, so against our whole-plate runs (--symmetry none). Our
@@ -177,7 +177,7 @@ void freefem_target(std::ostream& md, const std::vector<Run>& runs) {
     }
     const double ratio = ff->seconds / whole->seconds;
     md << words("time_to_accuracy.freefem_target", {{"tol", fmt("%g", tol)},
-                                                    {"status", met(ratio >= 5)},
+                                                    {"status", target_status(ratio >= 5)},
                                                     {"ours", whole->config->name},
                                                     {"n", std::to_string(whole->n)},
                                                     {"seconds", fmt("%.3g", whole->seconds)},
@@ -218,7 +218,7 @@ void accuracy_target(std::ostream& md, const std::vector<Run>& runs, const Confi
     md << ".\n";
     return;
   }
-  md << words("time_to_accuracy.accuracy_target", {{"status", met(best->seconds <= 1.0)},
+  md << words("time_to_accuracy.accuracy_target", {{"status", target_status(best->seconds <= 1.0)},
                                                    {"n", std::to_string(best->n)},
                                                    {"seconds", fmt("%.3g", best->seconds)},
                                                    {"err_w", fmt("%.1e", best->err_w)},
@@ -249,12 +249,12 @@ void line_target(std::ostream& md, const std::vector<Run>& runs, const Config& d
     if (seq[i + 1]->n > 128) lo = std::min(lo, orders[i]);
   if (orders.size() >= 2) steady = std::abs(orders.back() - orders[orders.size() - 2]) <= kSteadySpread;
   md << " "
-     << (at128 ? words("time_to_accuracy.line_at128", {{"status", met(at128->err_line <= 1e-3)}, {"error", fmt("%.1e", at128->err_line)}})
+     << (at128 ? words("time_to_accuracy.line_at128", {{"status", target_status(at128->err_line <= 1e-3)}, {"error", fmt("%.1e", at128->err_line)}})
                : words("time_to_accuracy.line_at128_not_measured"))
      << " "
      << (from128 && std::isfinite(lo)
              ? words(steady ? "time_to_accuracy.line_steady" : "time_to_accuracy.line_not_steady",
-                     {{"status", met(lo >= 1.5 && steady)}, {"least", fmt("%.2f", lo)}, {"spread", fmt("%g", kSteadySpread)}})
+                     {{"status", target_status(lo >= 1.5 && steady)}, {"least", fmt("%.2f", lo)}, {"spread", fmt("%g", kSteadySpread)}})
              : words("time_to_accuracy.line_steady_not_measured"))
      << "\n";
 }
@@ -284,7 +284,7 @@ void kink_target(std::ostream& md, const std::vector<Run>& runs, const Config& k
   else if (!k || !p)
     md << words("time_to_accuracy.kink_not_measured", {{"which", k ? "the plain space" : "the default"}}) << "\n";
   else
-    md << words("time_to_accuracy.kink_target", {{"status", met(p->seconds >= 20 * k->seconds)},
+    md << words("time_to_accuracy.kink_target", {{"status", target_status(p->seconds >= 20 * k->seconds)},
                                                  {"n", std::to_string(k->n)},
                                                  {"seconds", fmt("%.3g", k->seconds)},
                                                  {"mib", fmt("%.0f", k->peak_mib)},
@@ -298,7 +298,7 @@ void kink_target(std::ostream& md, const std::vector<Run>& runs, const Config& k
                                                    {"kink", fmt("%.3g", t.kink.median())},
                                                    {"plain", fmt("%.3g", t.plain.median())},
                                                    {"ratio", fmt("%.2f", ratio)},
-                                                   {"status", met(ratio <= 1.3)}})
+                                                   {"status", target_status(ratio <= 1.3)}})
      << "\n";
 }
 
@@ -343,11 +343,11 @@ std::string report(const std::vector<Run>& runs, const std::vector<Config>& conf
                                                  {"part", fmt("%.3g", part.median())},
                                                  {"whole", fmt("%.3g", whole.median())},
                                                  {"ratio", fmt("%.1f", ratio)},
-                                                 {"status", met(ratio >= 4)}})
+                                                 {"status", target_status(ratio >= 4)}})
      << "\n"
      << words("time_to_accuracy.series_target", {{"runs", std::to_string(series.seconds.size())},
                                                  {"ms", fmt("%.3g", 1000 * series.median())},
-                                                 {"status", met(series.median() <= 0.05)}})
+                                                 {"status", target_status(series.median() <= 0.05)}})
      << "\n";
   freefem_target(md, runs);
   return md.str();

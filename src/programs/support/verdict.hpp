@@ -6,6 +6,9 @@
 
 namespace plate {
 
+// A target's status in a report's target lines, bold either way so that a reader scanning finds it.
+inline std::string target_status(bool met) { return met ? "**met**" : "**not met**"; }
+
 // An order to the decimals (at most 2) its noise leaves, or "-" where it is undefined.
 std::string format_order(double p, double noise);
 
