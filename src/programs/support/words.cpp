@@ -7,7 +7,7 @@
 namespace plate {
 
 std::string words(const std::string& key, const WordValues& values) {
-  static const std::regex key_chars(R"([A-Za-z0-9_.\-]+)"), name_chars(R"([A-Za-z0-9_]+)");
+  static const std::regex key_chars(kWordKeyChars), name_chars(kWordNameChars);
   if (!std::regex_match(key, key_chars)) throw std::invalid_argument("words: the key \"" + key + "\" is not letters, digits, '_', '.' or '-'");
   std::string out = "<!--words " + key;
   std::set<std::string> names;

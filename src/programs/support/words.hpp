@@ -12,6 +12,10 @@ namespace plate {
 
 using WordValues = std::vector<std::pair<std::string, std::string>>;
 
+// What a marker's key and a value's name may hold: words() checks them, and the renderer's patterns
+// (words_file.cpp) take only these, so the writer and the reader cannot drift apart.
+inline const std::string kWordKeyChars = R"([A-Za-z0-9_.\-]+)", kWordNameChars = "[A-Za-z0-9_]+";
+
 // <!--words key name="value" ...-->: an HTML comment, so that a Markdown viewer shows nothing false
 // where the words are not yet put in. A key is letters, digits, '_', '.' and '-'; a name letters,
 // digits and '_', each name once; a value may not hold '"', "--" or a line break. Anything else

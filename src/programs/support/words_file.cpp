@@ -1,5 +1,7 @@
 #include "words_file.hpp"
 
+#include "words.hpp"
+
 #include <fstream>
 #include <regex>
 #include <set>
@@ -39,9 +41,9 @@ Words::Words(const std::string& path) : path_(path) {
 }
 
 std::string Words::render(const std::string& text) const {
-  static const std::regex marker(R"(<!--words ([A-Za-z0-9_.\-]+)((?: [A-Za-z0-9_]+="[^"]*")*)-->)");
-  static const std::regex value(R"(([A-Za-z0-9_]+)="([^"]*)\")");
-  static const std::regex slot(R"(@\{([A-Za-z0-9_]+)\})");
+  static const std::regex marker("<!--words (" + kWordKeyChars + ")((?: " + kWordNameChars + "=\"[^\"]*\")*)-->");
+  static const std::regex value("(" + kWordNameChars + ")=\"([^\"]*)\"");
+  static const std::regex slot("@\\{(" + kWordNameChars + ")\\}");
   std::string out;
   auto begin = text.cbegin();
   for (std::sregex_iterator m(text.begin(), text.end(), marker), end; m != end; ++m) {
