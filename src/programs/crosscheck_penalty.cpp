@@ -564,10 +564,10 @@ std::string eps_md(const Setup& s, const EpsPart& part) {
   std::string worst_w_text, worst_f_text, best_w_text;
   for (const EpsComparison& c : comparisons) {
     const double rw = c.w.tolerance / std::abs(c.our_w.limit), rf = c.f.tolerance / std::abs(c.our_f.limit);
-    if (rw > worst_w) worst_w = rw, worst_w_text = relative_text(c.w, c.our_w.limit);
+    const std::string tw = relative_text(c.w, c.our_w.limit);
+    if (rw > worst_w) worst_w = rw, worst_w_text = tw;
     if (rf > worst_f) worst_f = rf, worst_f_text = relative_text(c.f, c.our_f.limit);
     // The lower end is the smallest bound the rows print: a row below round-off claims its bound.
-    const std::string tw = relative_text(c.w, c.our_w.limit);
     const double printed = std::stod(without_bound(tw));
     if (printed < best_w) best_w = printed, best_w_text = tw;
   }

@@ -165,10 +165,11 @@ void crosscheck_penalty_numbers(Numbers& num, const std::string& results) {
     Range rel;
     std::string worst;
     for (std::size_t r : rows) {
-      if (relative(r) >= rel.hi) worst = t.text(r, "relative");
-      rel.add(relative(r));
+      const double v = relative(r);
+      if (v >= rel.hi) worst = t.text(r, "relative");
+      rel.add(v);
       const auto [it, fresh] = met.emplace(t.text(r, "eps"), true);
-      it->second = it->second && relative(r) <= bound;
+      it->second = it->second && v <= bound;
     }
     num.put("crosscheck_penalty." + q + "_relative_worst", worst, src + " " + q + " rows: largest relative");
   }
