@@ -446,12 +446,6 @@ int main(int argc, char** argv) {
   app.add_option("--max-linear", l.max_linear, "finest grid for scheme (5a)")->check(CLI::Range(8, 2048))->capture_default_str();
   app.add_option("--peer", peer.program, "the PETSc program (SNESVI)")
       ->check(CLI::ExistingFile)
-      ->check(CLI::Validator(
-          [](std::string& path) {  // the report names it in a marker of reports/words.md, which cannot hold these
-            return path.find('"') == std::string::npos && path.find("--") == std::string::npos ? std::string()
-                                                                                                 : "a path without '\"' or \"--\"";
-          },
-          "PATH"))
       ->capture_default_str();
   app.add_option("--min-peer", l.min_peer, "coarsest grid for the peers")->check(CLI::Range(8, 2048))->capture_default_str();
   app.add_option("--max-rsls", l.max_rsls, "finest grid for SNESVI rsls (0: none)")->check(CLI::Range(0, 2048))->capture_default_str();

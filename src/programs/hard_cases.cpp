@@ -107,9 +107,10 @@ void bad_input(std::ostream& md, const std::string& plate, const std::string& ca
 
 void interrupted(std::ostream& md, const std::string& plate, const std::string& scratch) {
   const Interrupted r = interrupt_run(plate, {"-n", "256", "-q"}, scratch + "/interrupt", 500);
-  md << "`plate -n 256 --json run.json --csv run.csv`, sent SIGINT after 0.5 s: exit status "
-     << (r.status >= 0 ? std::to_string(r.status) : std::string("(killed)")) << ", message \"" << table_cell(r.message)
-     << "\", files left in the output folder: " << r.files_left << ".\n\n";
+  md << words("hard_cases.interrupted", {{"status", r.status >= 0 ? std::to_string(r.status) : std::string("(killed)")},
+                                         {"message", table_cell(r.message)},
+                                         {"files", std::to_string(r.files_left)}})
+     << "\n\n";
 }
 
 // Each eps alone on the paper's problem, nodal and Gauss sampling, against an eps-free reference.
@@ -283,13 +284,16 @@ void cycling_active_set(std::ostream& md, const Context&) {
   ExactOptions plain;
   plain.globalise = false;
   const ExactResult a = solve_exact(p, plain), b = solve_exact(p, ExactOptions{});
-  md << "### The active set that cycles\n\nA 3 x 3 complementarity problem with a symmetric positive definite "
-        "matrix that is not an M-matrix (tests/test_active_set.cpp; the plate's own matrices gave none). Plain "
-        "primal-dual active sets: converged " << yes_no(a.converged) << ", message \"" << table_cell(a.message)
-     << "\". With the monotone fallback (the default): converged " << yes_no(b.converged) << " after "
-     << b.levels.back().primal_steps << " fallback steps, energies";
-  for (double e : b.fallback_energies) md << " " << fmt("%.6g", e);
-  md << " (strictly falling), certificate " << fmt("%.1e", b.certificate.worst()) << ".\n\n";
+  std::string energies;
+  for (double e : b.fallback_energies) energies += (energies.empty() ? "" : " ") + fmt("%.6g", e);
+  md << "### The active set that cycles\n\n"
+     << words("hard_cases.cycling", {{"plain_converged", yes_no(a.converged)},
+                                     {"plain_message", table_cell(a.message)},
+                                     {"converged", yes_no(b.converged)},
+                                     {"steps", std::to_string(b.levels.back().primal_steps)},
+                                     {"energies", energies},
+                                     {"certificate", fmt("%.1e", b.certificate.worst())}})
+     << "\n\n";
 }
 
 // Every line of the bad-input list, and an interrupted run.

@@ -18,8 +18,41 @@ inline const std::string kWordKeyChars = R"([A-Za-z0-9_.\-]+)", kWordNameChars =
 
 // <!--words key name="value" ...-->: an HTML comment, so that a Markdown viewer shows nothing false
 // where the words are not yet put in. A key is letters, digits, '_', '.' and '-'; a name letters,
-// digits and '_', each name once; a value may not hold '"', "--" or a line break. Anything else
-// throws std::invalid_argument: a marker the renderer could not read would vanish from the page.
+// digits and '_', each name once; a value any one line. Anything else throws std::invalid_argument:
+// a marker the renderer could not read would vanish from the page.
 std::string words(const std::string& key, const WordValues& values = {});
+
+// A value may quote a program's message or an option, but inside the marker it may hold neither '"'
+// (which ends it) nor "--" (which an HTML comment may not hold). So '&' -> &amp;, '"' -> &quot;, and
+// a '-' that follows a '-' -> &#45;; a value without '&', '"' or "--" is written as it is, so the
+// numbers in a marker stay plain for compare_tables. unescape_word_value() is the exact inverse.
+// Both are here, in the header, because the writer (platesupport) and the reader (platewords) are
+// two libraries that must not link each other.
+inline std::string escape_word_value(const std::string& value) {
+  std::string out;
+  for (size_t i = 0; i < value.size(); ++i) {
+    const char c = value[i];
+    if (c == '&') out += "&amp;";
+    else if (c == '"') out += "&quot;";
+    else if (c == '-' && i > 0 && value[i - 1] == '-') out += "&#45;";
+    else out += c;
+  }
+  return out;
+}
+
+inline std::string unescape_word_value(const std::string& value) {
+  static const std::pair<std::string, char> kEntities[] = {{"&amp;", '&'}, {"&quot;", '"'}, {"&#45;", '-'}};
+  std::string out;
+  for (size_t i = 0; i < value.size();) {
+    bool entity = false;
+    for (const auto& [text, c] : kEntities)
+      if (value.compare(i, text.size(), text) == 0) {
+        out += c, i += text.size(), entity = true;
+        break;
+      }
+    if (!entity) out += value[i++];
+  }
+  return out;
+}
 
 }  // namespace plate
