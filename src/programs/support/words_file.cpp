@@ -53,7 +53,7 @@ std::string Words::render(const std::string& text) const {
     std::map<std::string, std::string> given;
     const std::string list = (*m)[2];
     for (std::sregex_iterator v(list.begin(), list.end(), value); v != end; ++v)
-      if (!given.emplace((*v)[1], (*v)[2]).second) throw std::invalid_argument(key + ": the value " + std::string((*v)[1]) + " is given twice");
+      if (!given.emplace((*v)[1], unescape_word_value((*v)[2])).second) throw std::invalid_argument(key + ": the value " + std::string((*v)[1]) + " is given twice");
     std::set<std::string> used;
     std::string filled;
     const std::string& words = entry->second;
