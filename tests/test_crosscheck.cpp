@@ -8,6 +8,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
+#include <map>
 #include <sstream>
 
 #include "active_set.hpp"
@@ -124,6 +126,109 @@ TEST(CrossCode, FreeFemReproducesTheClampedSquareUnderUniformLoad) {
   // Within its discretisation error (the last increment) plus the published value's rounding.
   EXPECT_NEAR(w1, published, std::abs(w1 - w0) + 5e-9);
   EXPECT_LT(std::abs(w1 - w0), 1e-3 * published);  // and that error is small
+}
+
+// The whole plate's mesh made from a quarter's (MSH 2) by reflecting it in x = cx and y = cy, so
+// that it is exactly mirror-symmetric, which square_with_circle.geo's is not (its alternating
+// diagonals are not mirror images). The mirror lines (tag 3) become interior and are dropped.
+void unfold_quarter_mesh(const std::string& quarter, const std::string& whole, double cx, double cy) {
+  std::ifstream in(quarter);
+  std::string line;
+  while (std::getline(in, line) && line != "$Nodes") {}
+  int nodes = 0;
+  in >> nodes;
+  std::vector<std::pair<double, double>> xy(nodes + 1);
+  for (int k = 0; k < nodes; ++k) {
+    int id;
+    double z;
+    in >> id >> xy.at(id).first >> xy.at(id).second >> z;
+  }
+  while (std::getline(in, line) && line != "$Elements") {}
+  int elements = 0;
+  in >> elements;
+  std::vector<std::vector<int>> elems;  // type, physical, elementary, nodes...
+  for (int k = 0; k < elements; ++k) {
+    int id, type, ntags;
+    in >> id >> type >> ntags;
+    std::vector<int> tags(ntags), e{type};
+    for (int& t : tags) in >> t;
+    e.push_back(tags.at(0)), e.push_back(tags.at(1));
+    const int vertices = type == 1 ? 2 : type == 2 ? 3 : 1;
+    for (int v = 0; v < vertices; ++v) e.push_back(0), in >> e.back();
+    elems.push_back(e);
+  }
+  ASSERT_TRUE(in) << quarter;
+  // One node per distinct point: a mirror line's nodes are their own images.
+  std::map<std::pair<long long, long long>, int> index;
+  std::vector<std::pair<double, double>> out_xy;
+  const auto node = [&](double x, double y) {
+    const auto key = std::make_pair(std::llround(x * 1e9), std::llround(y * 1e9));
+    const auto [it, added] = index.emplace(key, int(out_xy.size()) + 1);
+    if (added) out_xy.push_back({x, y});
+    return it->second;
+  };
+  std::vector<std::vector<int>> out_elems;
+  for (int sx : {1, -1})
+    for (int sy : {1, -1})
+      for (const auto& e : elems) {
+        if (e[0] == 15 || (e[0] == 1 && e[1] == 3)) continue;  // points; the mirror lines
+        std::vector<int> f = {e[0], e[1], e[2]};
+        for (size_t v = 3; v < e.size(); ++v) {
+          const auto [x, y] = xy.at(e[v]);
+          f.push_back(node(cx + sx * (x - cx), cy + sy * (y - cy)));
+        }
+        if (sx * sy < 0 && e[0] == 2) std::swap(f[4], f[5]);  // a reflection turns a triangle over
+        out_elems.push_back(f);
+      }
+  std::ofstream out(whole);
+  out << std::setprecision(17) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" << out_xy.size() << "\n";
+  for (size_t k = 0; k < out_xy.size(); ++k) out << k + 1 << " " << out_xy[k].first << " " << out_xy[k].second << " 0\n";
+  out << "$EndNodes\n$Elements\n" << out_elems.size() << "\n";
+  for (size_t k = 0; k < out_elems.size(); ++k) {
+    const auto& f = out_elems[k];
+    out << k + 1 << " " << f[0] << " 2 " << f[1] << " " << f[2];
+    for (size_t v = 3; v < f.size(); ++v) out << " " << f[v];
+    out << "\n";
+  }
+  out << "$EndElements\n";
+}
+
+// The quarter mesh with mirror conditions (a penalty on the normal slope) solves the same discrete
+// problem as the whole plate meshed by the quarter and its mirror images: every value agrees within
+// both runs' round-off bounds (freefem.hpp), at points in all four quarters and in the line load,
+// which the quarter's JSON unfolds onto the whole rim. A missing or weak mirror condition (a free
+// edge; a penalty of 1e10) moves the rim's point forces by 6e-8 or more, far above these bounds.
+TEST(CrossCode, FreeFemOnAQuarterMeshSolvesTheWholePlate) {
+  const Scene s = paper_scene();
+  const std::string dir = work_dir(), pts = dir + "/quarter_points.txt";
+  write_points(pts, {{0.5, 0.5}, {0.3, 0.2}, {0.8, 0.3}, {0.65, 0.9}});
+  for (int n : {2, 4}) {
+    const std::string q = dir + "/quarter" + std::to_string(n) + ".msh", w = dir + "/unfolded" + std::to_string(n) + ".msh";
+    gmsh_mesh(kRef + "/quarter_square_with_circle.geo", circle_numbers(s, n), q);
+    unfold_quarter_mesh(q, w, s.cylinder->cx, s.cylinder->cy);
+    const CheckValues quarter = freefem_values(run_freefem(kEdp, q, scene_args(s, pts) + " -symmetry quarter", q + ".json"), 4 * n, s.cylinder->radius),
+                      whole = freefem_values(run_freefem(kEdp, w, scene_args(s, pts), w + ".json"), 4 * n, s.cylinder->radius);
+    ASSERT_TRUE(quarter.certified && whole.certified) << "n = " << n;
+    const auto near = [&](double a, double b, double scale, const char* what) {
+      EXPECT_NEAR(a, b, 2 * freefem_roundoff(whole.h, scale)) << what << ", n = " << n;
+    };
+    near(whole.max_w, quarter.max_w, whole.max_w, "max w");
+    near(whole.force, quarter.force, whole.force, "force");
+    // The fitted line load's round-off is that of its largest point forces.
+    near(whole.q0, quarter.q0, whole.line.max, "q(0)");
+    near(whole.q45, quarter.q45, whole.line.max, "q(pi/4)");
+    for (size_t k = 0; k < whole.w_at.size(); ++k) near(whole.w_at[k], quarter.w_at[k], whole.max_w, "w at a point");
+    EXPECT_EQ(whole.line.theta.size(), quarter.line.theta.size()) << "the rim unfolded, n = " << n;
+    EXPECT_LT(3 * quarter.unknowns, whole.unknowns);
+  }
+  // A mesh with no mirror lines is refused, and the quarter's .geo has no circle off the plate's centre.
+  const std::string msh = dir + "/whole_for_quarter.msh";
+  gmsh_mesh(kRef + "/square_with_circle.geo", {{"n", 1}}, msh);
+  const Captured run = run_captured("FF_LOADPATH=/usr/lib/freefem++ FreeFem++ -nw -v 0 '" + kEdp + "' -mesh '" + msh +
+                                    "' -points '" + pts + "' -symmetry quarter -out /dev/null 2>&1");
+  EXPECT_EQ(run.status, 2) << run.output;
+  EXPECT_NE(run.output.find("-symmetry quarter"), std::string::npos) << run.output;
+  EXPECT_THROW(gmsh_mesh(kRef + "/quarter_square_with_circle.geo", {{"n", 1}, {"cx", 0.4}}, dir + "/off.msh"), std::runtime_error);
 }
 
 TEST(CrossCode, PointForcesOnTheCircleGiveTheLineLoad) {
