@@ -19,19 +19,20 @@ set linetype 9 lc rgb '#8c564b'
 set linetype 10 lc rgb '#17becf'
 set linetype 11 lc rgb '#7f7f7f'
 set linetype 12 lc rgb '#bcbd22'
+set linetype 13 lc rgb '#e377c2'
 data = 'results/time_to_accuracy.csv'
 stats data using 2 nooutput
 blocks = STATS_blocks
 # The configurations of src/programs/time_to_accuracy.cpp, in its order (the CSV has one block each).
-array names[12] = ["default: edge, kink carried", "edge, plain", "edge points", "edge, whole plate", "nodes", "Gauss", "(3a) edge", "(3a) Gauss (paper)", "(5a) Gauss (paper)", "SNESVI rsls, nodes", "SNESVI ssls, nodes", "FreeFEM HCT"]
+array names[13] = ["default: edge, kink carried", "edge, plain", "edge points", "edge, whole plate", "nodes", "Gauss", "(3a) edge", "(3a) Gauss (paper)", "(5a) Gauss (paper)", "SNESVI rsls, nodes", "SNESVI ssls, nodes", "FreeFEM HCT, whole", "FreeFEM HCT, quarter"]
 # Filled marks only (open ones are the runs that exit 3), distinct within each panel.
-array marker[12] = [7, 5, 9, 11, 13, 15, 5, 9, 11, 5, 9, 11]
-array dash[12] = [1, 2, 3, 4, 5, 1, 2, 3, 4, 2, 3, 4]
+array marker[13] = [7, 5, 9, 11, 13, 15, 5, 9, 11, 5, 9, 11, 15]
+array dash[13] = [1, 2, 3, 4, 5, 1, 2, 3, 4, 2, 3, 4, 1]
 ok(col) = (column(3) == 0 && column(col) > 0) ? column(col) : NaN
 bad(col) = (column(3) != 0 && column(col) > 0) ? column(col) : NaN
 # Which blocks (1-based configurations) each panel draws.
 panel1 = "1 2 3 4 5 6"
-panel2 = "1 5 10 11 12"
+panel2 = "1 5 10 11 12 13"
 panel3 = "1 7 8 9"
 array titles[3] = ["this code, exact", "peers on the same scene", "the paper's penalty schemes"]
 set multiplot
