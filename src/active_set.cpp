@@ -111,15 +111,25 @@ ExactResult solve_sequenced(Problem& p, const ExactOptions& o) {
   ExactResult r = rim_follows_contact(p) ? solve_rim(p, o, coarse ? &*coarse : nullptr, wc, lc, margin, initial)
                                          : solve_exact(p, o, std::move(initial));
   r.levels.back().seconds += seconds_predict;
-  if (o.on_level) o.on_level(p, r);
+  if (o.measure_levels) {
+    ExactLevel& l = r.levels.back();
+    l.measures = measure_field(p, r.w, o.measure_levels->nu, o.measure_levels->points);
+    l.force = (1 << (int(p.grid.mirror_x) + int(p.grid.mirror_y))) * p.sampling.weights.dot(r.lambda);
+    l.certified = r.converged;
+    l.enriched = p.kink.has_value();
+  }
   r.levels.insert(r.levels.begin(), coarse_levels.begin(), coarse_levels.end());
   return r;
 }
 
 SceneSolution solve_exact_scene(const Scene& scene, int n, const SamplingSpec& spec, const ExactOptions& o, bool use_mirrors) {
+  return solve_exact_scene(scene, n, spec, o, use_mirrors ? find_mirrors(scene, scene.grid(n), spec) : Mirrors{});
+}
+
+SceneSolution solve_exact_scene(const Scene& scene, int n, const SamplingSpec& spec, const ExactOptions& o, Mirrors mirrors) {
   SceneSolution s;
   const Grid g = scene.grid(n);
-  if (use_mirrors) s.mirrors = find_mirrors(scene, g, spec);
+  s.mirrors = mirrors;
   if (!s.mirrors.any()) {
     s.solved = make_problem(scene, g, spec);
     s.result = solve_sequenced(s.solved, o);

@@ -34,7 +34,9 @@ struct SceneSolution {
   VectorXd part_w, part_lambda;     // the solve's own, on `solved` (the same as result's when whole)
   const Problem& whole() const { return unfolded ? *unfolded : solved; }
 };
-// n: cells along x of the whole plate.
+// n: cells along x of the whole plate; `mirrors` as find_mirrors found them for that grid (none: whole).
+SceneSolution solve_exact_scene(const Scene& s, int n, const SamplingSpec& spec, const ExactOptions& o, Mirrors mirrors);
+// The same, finding the scene's mirror lines itself (none when use_mirrors is false).
 SceneSolution solve_exact_scene(const Scene& s, int n, const SamplingSpec& spec, const ExactOptions& o, bool use_mirrors = true);
 
 

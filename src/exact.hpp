@@ -5,9 +5,11 @@
 // nodal values, dual_active_set.hpp for any rows); active_set.hpp chooses between them.
 #pragma once
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "extrema.hpp"
 #include "fixed_set.hpp"
 #include "problem.hpp"
 #include "refinement.hpp"
@@ -40,9 +42,13 @@ struct ExactOptions {
   // active-set iterations: the grid's cells along x, the iteration, the rows held, and how many
   // join or leave next. Empty: silent.
   std::function<void(int cells, int iteration, int held, int changed)> on_iterate;
-  // Every grid of a sequence as it is done, coarsest first (the last is the grid asked for): its
-  // problem (the part of the plate solved, with the rows it was solved with) and answer. Empty: none.
-  std::function<void(const Problem& p, const ExactResult& r)> on_level;
+  // Measure every grid's answer of a sequence as it is done (extrema.hpp: FieldMeasures, with this
+  // nu, at these points), into its ExactLevel: the values error bars are put on. Unset: none.
+  struct LevelMeasures {
+    double nu = 0.3;
+    std::vector<std::pair<double, double>> points;
+  };
+  std::optional<LevelMeasures> measure_levels;
 };
 void validate(const ExactOptions& o);
 
@@ -60,6 +66,12 @@ struct ExactLevel {
   int layouts = 0;             // rows on a circle laid out for the contact: layouts solved (0: periodic splines only)
   int exchanged = 0;           // point rows added where the plate dipped between rows (rim_exchange.hpp)
   double seconds = 0;
+  // With ExactOptions::measure_levels: this grid's answer read off (on the whole plate, through any
+  // mirror lines), its total force (a part's times its images), whether it is certified, and
+  // whether it was solved in the space carrying the kink (D31).
+  std::optional<FieldMeasures> measures;
+  double force = 0;
+  bool certified = false, enriched = false;
 };
 
 struct ExactResult {

@@ -75,4 +75,20 @@ Extremum extremum_of_w(const Grid& g, const VectorXd& w, double sign, int starts
   return extremum_of(g, [&](double x, double y) { return evaluate(g, w, x, y); }, sign, starts);
 }
 
+FieldMeasures measure_field(const Problem& p, const VectorXd& w, double nu, const std::vector<std::pair<double, double>>& points) {
+  FieldMeasures m;
+  const PlateField field(p, w);
+  for (const auto& [x, y] : points) m.w_at.push_back(field.at(x, y).w);
+  m.max_w = extremum_of_w(p, w, +1);
+  m.min_w = extremum_of_w(p, w, -1);
+  // |m12| = (1 - nu) |w_xy|, continuous for these elements: from the best node, by the pattern.
+  const auto twist = [&](double x, double y) { return std::abs(bending_moments(0, field.at(x, y).wxy, 0, nu).m12); };
+  Extremum best{-1, 0, 0};
+  for (int j = 0; j <= p.grid.whole_ny(); ++j)
+    for (int i = 0; i <= p.grid.whole_nx(); ++i)
+      if (const double v = twist(i * p.grid.h, j * p.grid.h); v > best.value) best = {v, i * p.grid.h, j * p.grid.h};
+  m.max_abs_m12 = pattern_maximum(p.grid, twist, best.x, best.y, p.grid.h / 2);
+  return m;
+}
+
 }  // namespace plate

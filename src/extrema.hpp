@@ -7,6 +7,8 @@
 // points that shrinks onto the extremum.
 #pragma once
 #include <functional>
+#include <utility>
+#include <vector>
 
 #include "grid.hpp"
 #include "problem.hpp"
@@ -30,5 +32,14 @@ Extremum extremum_of_w(const Grid& g, const VectorXd& w, double sign, int starts
 // best point so far, each round's spacing a fifth of the last, from `step` down to 1e-9 of the plate.
 Extremum pattern_maximum(const Grid& g, const std::function<double(double, double)>& f, double x0, double y0,
                          double step);
+
+// What a report reads off an answer w_h, measured once: max w and min w (above), max |m12| (the
+// twisting moment with Poisson's ratio nu, by the pattern from its best node), and w_h at `points`.
+// On the part of the plate that mirror lines leave, w_h is read on the whole plate through them.
+struct FieldMeasures {
+  Extremum max_w, min_w, max_abs_m12;
+  std::vector<double> w_at;  // at the points, in order
+};
+FieldMeasures measure_field(const Problem& p, const VectorXd& w, double nu, const std::vector<std::pair<double, double>>& points);
 
 }  // namespace plate

@@ -13,15 +13,15 @@
 #include <optional>
 #include <sstream>
 
+#include "active_set.hpp"
 #include "atomic_file.hpp"
-#include "exit_codes.hpp"
 #include "contraction.hpp"
-#include "dual_active_set.hpp"
 #include "error_bar.hpp"
-#include "mirror.hpp"
+#include "exit_codes.hpp"
 #include "extrema.hpp"
 #include "fields.hpp"
 #include "format.hpp"
+#include "mirror.hpp"
 #include "norms.hpp"
 #include "paper_numbers.hpp"
 #include "progress.hpp"
@@ -288,17 +288,9 @@ struct Run {
   plate::SolveOptions opt;
   plate::ExactOptions exact_opt;
   double nu = plate::kPoissonRatio;
-  bool use_mirrors = true;
+  plate::Mirrors mirrors;  // the exact scheme's, found once (none with --symmetry none)
   bool estimate = true;
   plate::Report report;
-};
-
-// The answer's values on one grid of the sequence, for the error bars.
-struct LevelAnswer {
-  int cells = 0;
-  bool certified = false, enriched = false;
-  double max_w = 0, min_w = 0, force = 0, m12 = 0;
-  std::vector<double> at_points;
 };
 
 // "auto", "points", "spline" or "spline:DEGREE[,CELLS]"; throws std::invalid_argument naming
@@ -342,7 +334,6 @@ Run check(const Options& o) {
     refuse_group(o.penalty, "--scheme exact (no eps: the constraint is held exactly)");
   else
     refuse_group(o.exact, "the penalty schemes (it applies to --scheme exact only)");
-  r.use_mirrors = o.symmetry == "auto";
   if (r.exact && o.enrich != "none") {
     const bool circle = r.spec.kind == SamplingKind::Edge && r.scene.edge.kind == EdgeCurve::Kind::Circle;
     if (o.enrich == "ring" && !circle)
@@ -353,8 +344,10 @@ Run check(const Options& o) {
   }
   // The memory the model solved needs: the part the mirrors leave, for the exact scheme. A grid whose
   // smallest part would not fit is refused first, before the mirrors are looked for on all its nodes.
-  if (r.exact && r.use_mirrors) check_memory(part_of(r.g, plate::Mirrors{r.g.nx % 2 == 0, r.g.ny % 2 == 0}));
-  check_memory(r.exact && r.use_mirrors ? part_of(r.g, find_mirrors(r.scene, r.g, r.spec)) : r.g);
+  const bool use_mirrors = r.exact && o.symmetry == "auto";
+  if (use_mirrors) check_memory(part_of(r.g, plate::Mirrors{r.g.nx % 2 == 0, r.g.ny % 2 == 0}));
+  if (use_mirrors) r.mirrors = find_mirrors(r.scene, r.g, r.spec);
+  check_memory(part_of(r.g, r.mirrors));
   r.nu = o.nu;
   r.estimate = o.estimate == "auto";
   r.exact_opt.tol = o.tol_opt->count() ? o.opt.tol : r.exact_opt.tol;
@@ -390,39 +383,19 @@ void echo(const CLI::App& app, const Options& o, Run& r) {
   for (const auto& [k, v] : r.report.config) std::cout << "  " << k << " = " << v << "\n";
 }
 
-// The values an error bar is put on, on one grid of the sequence (the part of the plate solved: w_h
-// is read on the whole plate through the mirrors, and the force of a part counts once per image).
-LevelAnswer level_answer(const plate::Problem& p, const plate::ExactResult& x, const Run& r) {
-  using namespace plate;
-  LevelAnswer a;
-  a.cells = p.grid.whole_nx();
-  a.enriched = p.kink.has_value();
-  a.certified = x.converged;
-  a.force = (1 << (int(p.grid.mirror_x) + int(p.grid.mirror_y))) * p.sampling.weights.dot(x.lambda);
-  // The field's extremes, m12 and the user's points, as the report of the finest grid measures them.
-  Report scratch;
-  scratch.points = r.report.points;
-  measure(scratch, p, x.w, r.nu);
-  a.max_w = scratch.max_w.value;
-  a.min_w = scratch.min_w.value;
-  a.m12 = scratch.max_abs_m12.value;
-  a.at_points = scratch.w_at_points;
-  return a;
-}
-
 // Error bars from the last four grids of the sequence (or three, or two), each certified and each
 // with half the cells of the next; none, with the reason, otherwise.
-void set_error_bars(Run& r, const std::vector<LevelAnswer>& levels) {
+void set_error_bars(Run& r, const std::vector<plate::ExactLevel>& levels) {
   using namespace plate;
   if (!r.estimate) return;
-  std::vector<const LevelAnswer*> use;
+  std::vector<const ExactLevel*> use;
   for (auto it = levels.rbegin(); it != levels.rend() && use.size() < 4; ++it) {
     // Grids of one space only: a coarser grid that (D31) did not fit converges otherwise.
     if (!use.empty() && it->enriched != use.back()->enriched && use.size() < 4) {
       r.report.bar_grids_note = "the coarser grids, which the kink functions (D31) do not fit, were solved in the plain space and are left out";
       break;
     }
-    if (!it->certified || (!use.empty() && 2 * it->cells != use.back()->cells)) break;
+    if (!it->measures || !it->certified || (!use.empty() && 2 * it->cells != use.back()->cells)) break;
     use.push_back(&*it);
   }
   std::reverse(use.begin(), use.end());
@@ -437,13 +410,13 @@ void set_error_bars(Run& r, const std::vector<LevelAnswer>& levels) {
     for (const auto* l : use) v.push_back(get(*l));
     r.report.bars.emplace_back(name, error_bar(v));
   };
-  add("max w", [](const LevelAnswer& l) { return l.max_w; });
-  add("min w", [](const LevelAnswer& l) { return l.min_w; });
-  add("total contact force", [](const LevelAnswer& l) { return l.force; });
-  add("max |m12|", [](const LevelAnswer& l) { return l.m12; });
+  add("max w", [](const ExactLevel& l) { return l.measures->max_w.value; });
+  add("min w", [](const ExactLevel& l) { return l.measures->min_w.value; });
+  add("total contact force", [](const ExactLevel& l) { return l.force; });
+  add("max |m12|", [](const ExactLevel& l) { return l.measures->max_abs_m12.value; });
   for (size_t k = 0; k < r.report.points.size(); ++k)
     add("w(" + fmt("%.10g", r.report.points[k].first) + ", " + fmt("%.10g", r.report.points[k].second) + ")",
-        [k](const LevelAnswer& l) { return l.at_points[k]; });
+        [k](const ExactLevel& l) { return l.measures->w_at.at(k); });
 }
 
 // The exact solver's answer in the penalty schemes' form, for one report: on the part of the plate
@@ -458,10 +431,9 @@ plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::Vec
       progress.stage(grid + "active-set iteration " + std::to_string(iteration) + ", " + std::to_string(held) +
                      " rows held, " + std::to_string(changed) + " to change");
   };
-  std::vector<LevelAnswer> levels;
-  if (r.estimate) r.exact_opt.on_level = [&](const Problem& p, const ExactResult& x) { levels.push_back(level_answer(p, x, r)); };
-  scene = solve_exact_scene(r.scene, r.g.nx, r.spec, r.exact_opt, r.use_mirrors);
-  set_error_bars(r, levels);
+  if (r.estimate) r.exact_opt.measure_levels = ExactOptions::LevelMeasures{r.nu, r.report.points};
+  scene = solve_exact_scene(r.scene, r.g.nx, r.spec, r.exact_opt, r.mirrors);
+  set_error_bars(r, scene.result.levels);
   const ExactResult& exact = scene.result;
   SolveResult result;
   result.w = exact.w;
@@ -540,11 +512,12 @@ int solve_and_write(const Options& o, Run& r, plate::Clock::time_point t0) {
   }
   const Problem& problem = r.exact ? scene.whole() : *penalised;
   progress.stage(result.converged ? "solved; writing the outputs" : "not converged; writing the outputs");
+  // Everything the outputs state is computed here, each once; below, it is only written.
   const NodalFields nodes = nodal_fields(problem, result.w, xi, o.nu);
+  r.report.dip_below_edge = dip_below_edge(problem, result.w);
   r.report.xi = xi;
   r.report.line = line_force(problem, xi);
-  r.report.dip_below_edge = dip_below_edge(problem, result.w);
-  measure(r.report, problem, result.w, o.nu);
+  r.report.measures = measure_field(problem, result.w, o.nu, r.report.points);
   if (o.rate) r.report.lambda1h = smallest_eigenpair(problem.K, problem.M).lambda;
   r.report.problem = &problem;
   r.report.result = &result;
@@ -560,10 +533,15 @@ int solve_and_write(const Options& o, Run& r, plate::Clock::time_point t0) {
     bounds = "# certificate (discrete): worst relative entry " + fmt("%.2g", r.report.certificate->worst()) + "\n";
   std::istringstream bar_lines(error_bars_text(r.report));
   for (std::string line; std::getline(bar_lines, line);) bounds += "# " + line + "\n";
-  if (!o.csv_path.empty()) write_file_atomically(o.csv_path, warning + bounds + nodal_csv(nodes));
-  if (!o.json_path.empty()) write_file_atomically(o.json_path, summary_json(r.report));
-  if (!o.line_csv_path.empty()) write_file_atomically(o.line_csv_path, warning + line_force_csv(problem, r.report.line));
-  if (!o.quiet) std::cout << summary_text(r.report);
+  // Every output formatted first, then written: the files whole, and after them the summary.
+  const std::string csv = o.csv_path.empty() ? "" : warning + bounds + nodal_csv(nodes),
+                    json = o.json_path.empty() ? "" : summary_json(r.report),
+                    line_csv = o.line_csv_path.empty() ? "" : warning + line_force_csv(problem, r.report.line),
+                    summary = o.quiet ? "" : summary_text(r.report);
+  if (!o.csv_path.empty()) write_file_atomically(o.csv_path, csv);
+  if (!o.json_path.empty()) write_file_atomically(o.json_path, json);
+  if (!o.line_csv_path.empty()) write_file_atomically(o.line_csv_path, line_csv);
+  std::cout << summary;
   if (!result.converged) {
     std::cerr << "plate: error: " << result.message << "\n";
     return kNotConverged;

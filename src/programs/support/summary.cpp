@@ -41,21 +41,6 @@ Extremes extremes(const NodalFields& f) {
 }
 }  // namespace
 
-void measure(Report& r, const Problem& p, const VectorXd& w, double nu) {
-  r.w_at_points.clear();
-  const PlateField field(p, w);
-  for (const auto& [x, y] : r.points) r.w_at_points.push_back(field.at(x, y).w);
-  r.max_w = extremum_of_w(p, w, +1);
-  r.min_w = extremum_of_w(p, w, -1);
-  // |m12| = (1 - nu) |w_xy|, continuous for these elements: from the best node, by the pattern.
-  const auto twist = [&](double x, double y) { return std::abs(bending_moments(0, field.at(x, y).wxy, 0, nu).m12); };
-  Extremum best{-1, 0, 0};
-  for (int j = 0; j <= p.grid.whole_ny(); ++j)
-    for (int i = 0; i <= p.grid.whole_nx(); ++i)
-      if (const double v = twist(i * p.grid.h, j * p.grid.h); v > best.value) best = {v, i * p.grid.h, j * p.grid.h};
-  r.max_abs_m12 = pattern_maximum(p.grid, twist, best.x, best.y, p.grid.h / 2);
-}
-
 std::string nodal_csv(const NodalFields& f) {
   std::ostringstream o;
   o << "# plate: nodal fields; w and derivatives (second ones averaged over the elements at the node),\n"
@@ -205,21 +190,21 @@ std::string summary_json(const Report& r) {
   j["total_iterations"] = s.total_iterations();
   j["levels"] = levels_json(s, r.eps_unit);
   // Extremes of the field w_h over the plate; the nodal maximum apart, labelled as such.
-  j["max_w"] = number(r.max_w.value);
-  j["max_w_at"] = {number(r.max_w.x), number(r.max_w.y)};
-  j["min_w"] = number(r.min_w.value);
-  j["min_w_at"] = {number(r.min_w.x), number(r.min_w.y)};
-  j["max_abs_w"] = number(std::max(std::abs(r.max_w.value), std::abs(r.min_w.value)));
+  j["max_w"] = number(r.measures.max_w.value);
+  j["max_w_at"] = {number(r.measures.max_w.x), number(r.measures.max_w.y)};
+  j["min_w"] = number(r.measures.min_w.value);
+  j["min_w_at"] = {number(r.measures.min_w.x), number(r.measures.min_w.y)};
+  j["max_abs_w"] = number(std::max(std::abs(r.measures.max_w.value), std::abs(r.measures.min_w.value)));
   j["max_w_nodes"] = number(e.max_w);
   j["max_w_nodes_at"] = {number(f.x[e.argmax_w]), number(f.y[e.argmax_w])};
   j["w_at_points"] = Json::array();
   for (size_t k = 0; k < r.points.size(); ++k)
-    j["w_at_points"].push_back({{"x", number(r.points[k].first)}, {"y", number(r.points[k].second)}, {"w", number(r.w_at_points.at(k))}});
+    j["w_at_points"].push_back({{"x", number(r.points[k].first)}, {"y", number(r.points[k].second)}, {"w", number(r.measures.w_at.at(k))}});
   j["total_contact_force"] = number(total_contact_force(p, xi));
   j["max_xi_samples"] = number(xi.size() ? xi.maxCoeff() : 0.0);
   j["max_xi_nodes"] = number(e.max_xi);
-  j["max_abs_m12"] = number(r.max_abs_m12.value);
-  j["max_abs_m12_at"] = {number(r.max_abs_m12.x), number(r.max_abs_m12.y)};
+  j["max_abs_m12"] = number(r.measures.max_abs_m12.value);
+  j["max_abs_m12_at"] = {number(r.measures.max_abs_m12.x), number(r.measures.max_abs_m12.y)};
   j["max_abs_m12_nodes"] = number(e.max_abs_m12);
   j["line_force"] = line_force_json(r.line);
   j["constraint_violation"] = number((p.phi - p.sampling.S * s.w).cwiseMax(0.0).maxCoeff());
@@ -256,15 +241,15 @@ std::string summary_text(const Report& r) {
     for (const auto& l : s.levels) o << " " << summary_value(l.eps / r.eps_unit) << ":" << l.iterations;
     o << "  total " << s.total_iterations() << "\n";
   }
-  o << "max w = " << summary_value(r.max_w.value) << " at (" << summary_value(r.max_w.x) << ", " << summary_value(r.max_w.y) << "), min w = "
-    << summary_value(r.min_w.value) << " at (" << summary_value(r.min_w.x) << ", " << summary_value(r.min_w.y)
+  o << "max w = " << summary_value(r.measures.max_w.value) << " at (" << summary_value(r.measures.max_w.x) << ", " << summary_value(r.measures.max_w.y) << "), min w = "
+    << summary_value(r.measures.min_w.value) << " at (" << summary_value(r.measures.min_w.x) << ", " << summary_value(r.measures.min_w.y)
     << ") (of w_h over the plate; the largest nodal value is " << summary_value(e.max_w) << " at (" << summary_value(f.x[e.argmax_w]) << ", "
     << summary_value(f.y[e.argmax_w]) << "))\n";
   for (size_t k = 0; k < r.points.size(); ++k)
-    o << "w(" << summary_value(r.points[k].first) << ", " << summary_value(r.points[k].second) << ") = " << summary_value(r.w_at_points.at(k)) << "\n";
+    o << "w(" << summary_value(r.points[k].first) << ", " << summary_value(r.points[k].second) << ") = " << summary_value(r.measures.w_at.at(k)) << "\n";
   o << "total contact force = " << summary_value(total_contact_force(*r.problem, xi)) << ", max xi at nodes = "
-    << summary_value(e.max_xi) << ", max |m12| = " << summary_value(r.max_abs_m12.value) << " at (" << summary_value(r.max_abs_m12.x) << ", "
-    << summary_value(r.max_abs_m12.y) << ") (at the nodes " << summary_value(e.max_abs_m12) << "), contact nodes: " << e.contact.size() << "\n";
+    << summary_value(e.max_xi) << ", max |m12| = " << summary_value(r.measures.max_abs_m12.value) << " at (" << summary_value(r.measures.max_abs_m12.x) << ", "
+    << summary_value(r.measures.max_abs_m12.y) << ") (at the nodes " << summary_value(e.max_abs_m12) << "), contact nodes: " << e.contact.size() << "\n";
   if (!r.line.empty()) {
     const LineForce& l = r.line;
     o << "line load on the edge (" << l.q.size() << (l.spline_degree > 0 ? " spline knots" : " points") << "): mean " << summary_value(l.mean) << " (total " << summary_value(l.total)

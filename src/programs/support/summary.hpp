@@ -23,7 +23,6 @@ struct Report {
   const Certificate* certificate = nullptr;       // the exact solver's; null for the penalty schemes
   double certificate_tol = 0;
   std::vector<std::pair<double, double>> points;  // where the user asked for w
-  std::vector<double> w_at_points;                 // w_h there (measure() fills it)
   double lambda1h = -1;                           // < 0: not computed
   double seconds_assemble = 0, seconds_total = 0;
   double eps_unit = 1;  // eps is printed divided by this, in the user's unit (plate: lx^4)
@@ -32,9 +31,9 @@ struct Report {
   std::string space = "Bogner-Fox-Schmit";  // the finite-element space (with the enrichment D31, if any)
   std::vector<double> refinement;     // the exact solve's refinement steps, each correction's relative size
   double dip_below_edge = NAN;        // max of phi - w along the edge curve (NaN: no edge)
-  // The extremes of the finite-element fields over the plate (extrema.hpp), found by the program
-  // before it reports; the nodal ones are read off `nodes`.
-  Extremum max_w, min_w, max_abs_m12;
+  // The extremes of the finite-element fields over the plate and w_h at `points` (extrema.hpp),
+  // measured by the program before it reports; the nodal ones are read off `nodes`.
+  FieldMeasures measures;
   // How the rows on a circle were laid out (D28): spline arcs, point rows, those added by exchange, layouts tried.
   int rim_arcs = -1, rim_points = 0, rim_exchanged = 0, rim_layouts = 0;
   // Error bars on the distance to the plate's answer (error_bar.hpp), from the grids `bar_grids` of
@@ -44,10 +43,6 @@ struct Report {
   std::string bar_grids_note;  // why coarser grids of the sequence were left out, if they were
   std::string bar_note;
 };
-// What the report states of the answer w, computed once before it is written: the extremes of w_h
-// and of |m12| over the plate (not over the nodes), and w_h at r.points.
-void measure(Report& r, const Problem& p, const VectorXd& w, double nu);
-
 // The angles at which --line-csv gives a spline line load (and the semi-analytic scheme its own).
 constexpr int kLineCsvAngles = 720;
 
