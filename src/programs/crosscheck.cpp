@@ -404,9 +404,8 @@ bool disk_verdict(std::ostream& md, const Setup& u, const Runs& runs) {
 // Both codes against the published centre deflection of the clamped square under f = 1.
 bool uniform_load(std::ostream& md, const Setup& u, const Runs& runs) {
   const double published = u.uniform_centre;
-  md << "\n## The clamped square under uniform load\n\nCentre deflection for f = 1, against the classical "
-     << published << " (Timoshenko & Woinowsky-Krieger, Theory of Plates and Shells, Table 35).\n\n"
-        "| code | grid | w(0.5, 0.5) | minus published |\n|---|---|---|---|\n";
+  md << "\n## The clamped square under uniform load\n\n" << words("crosscheck.uniform_intro", {{"published", fmt("%g", published)}})
+     << "\n\n| code | grid | w(0.5, 0.5) | minus published |\n|---|---|---|---|\n";
   for (size_t i = 0; i < runs.ff_uniform.size(); ++i)
     md << "| FreeFEM HCT | " << runs.ff[i].grid << " | " << fmt("%.8f", runs.ff_uniform[i]) << " | "
        << fmt("%+.1e", runs.ff_uniform[i] - published) << " |\n";
@@ -470,9 +469,7 @@ int main(int argc, char** argv) {
     write_tables(u, runs);
     std::ostringstream md;
     describe(md, u, runs);
-    md << "\n### Each code's limit\n\nThe order from three successive grids is log2 of the ratio of their increments; "
-          "where the last two differ by at most "
-       << fmt("%g", kSteadySpread) << " it is called steady (richardson.hpp).\n";
+    md << "\n### Each code's limit\n\n" << words("crosscheck.orders_intro", {{"spread", fmt("%g", kSteadySpread)}}) << "\n";
     convergence(md, u, runs, {&runs.ff, &runs.edge},
                 words("crosscheck.square_orders_caption"));
     bool targets_met = false;

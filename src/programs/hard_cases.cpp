@@ -56,7 +56,7 @@ void eps_sweep(std::ostream& md, const Problem& p, const VectorXd& reference, co
                double tol, int cap, double lambda1, const std::string& caption) {
   md << "| scheme | eps | certified | iterations | predicted (5a) | factorisations | error bound | round-off floor"
         " | violation | error vs " << reference_name << " | why not |\n|---|---:|:---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
-  std::string smallest;  // said after the table, which a line between rows would cut in two
+  WordValues smallest;  // said after the table, which a line between rows would cut in two
   for (Scheme s : {Scheme::Nonlinear, Scheme::Linear}) {
     double smallest_certified = 0;
     for (int e = 2; e <= 14; ++e) {
@@ -71,12 +71,11 @@ void eps_sweep(std::ostream& md, const Problem& p, const VectorXd& reference, co
          << fmt("%.1e", r.bound.bound) << " | " << fmt("%.1e", r.bound.roundoff) << " | " << fmt("%.1e", r.violation)
          << " | " << fmt("%.1e", r.error) << " | " << why_not(r) << " |\n";
     }
-    smallest += std::string(smallest.empty() ? "Smallest certified eps: " : ", ") +
-                (s == Scheme::Linear ? "(5a) " : "(3a) ") +
-                (smallest_certified > 0 ? fmt("%.0e", smallest_certified) : std::string("none"));
+    smallest.emplace_back(s == Scheme::Linear ? "linear" : "nonlinear",
+                          smallest_certified > 0 ? fmt("%.0e", smallest_certified) : std::string("none"));
   }
   md << "\nTable: " << caption << " " << words("hard_cases.sweep_caption_tail") << "\n\n"
-     << smallest << ".\n\n";
+     << words("hard_cases.smallest_eps", smallest) << "\n\n";
 }
 
 std::string table_cell(std::string s) {
@@ -302,7 +301,6 @@ void bad_inputs(std::ostream& md, const Context& c) {
         "### Bad input\n\n"
      << words("hard_cases.bad_input_intro") << "\n\n";
   bad_input(md, c.plate, c.cases, c.scratch);
-  md << "**An interrupted run.** ";
   interrupted(md, c.plate, c.scratch);
 }
 }  // namespace
