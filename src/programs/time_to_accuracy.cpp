@@ -174,14 +174,13 @@ void freefem_target(std::ostream& md, const std::vector<Run>& runs) {
     for (const double tol : {1e-6, 1e-8}) {
       const Run *mine = fastest_within(runs, tol, whole ? ours_whole : ours_part),
                 *ff = fastest_within(runs, tol, whole ? freefem_whole : freefem_quarter);
-      const std::string part = whole ? "whole" : "quarter";
       if (!mine || !ff) {
-        md << words("time_to_accuracy.freefem_not_measured_" + part, {{"tol", fmt("%g", tol)}, {"which", mine ? "FreeFEM" : "ours"}})
+        md << words(whole ? "time_to_accuracy.freefem_not_measured_whole" : "time_to_accuracy.freefem_not_measured_quarter", {{"tol", fmt("%g", tol)}, {"which", mine ? "FreeFEM" : "ours"}})
            << "\n";
         continue;
       }
       const double ratio = ff->seconds / mine->seconds;
-      md << words("time_to_accuracy.freefem_target_" + part, {{"tol", fmt("%g", tol)},
+      md << words(whole ? "time_to_accuracy.freefem_target_whole" : "time_to_accuracy.freefem_target_quarter", {{"tol", fmt("%g", tol)},
                                                                {"status", target_status(ratio >= 5)},
                                                                {"ours", mine->config->name},
                                                                {"n", std::to_string(mine->n)},
