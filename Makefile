@@ -134,7 +134,7 @@ $(CONTINUUM_DATA) &: $(BUILD)/continuum $(PAPER_NUMBERS)
 liftoff: $(LIFTOFF) ## scenes where the plate lifts off part of the rim: three kinds of rows, and FreeFEM on fitted meshes (about 2 min)
 
 # The timings file is written by the same run; it is not byte-identical between runs.
-$(LIFTOFF) &: $(BUILD)/liftoff reference/square_with_circle.geo reference/contact_hct.edp reference/checked_solve.idp | deps
+$(LIFTOFF) &: $(BUILD)/liftoff reference/square_with_circle.geo reference/quarter_square_with_circle.geo reference/contact_hct.edp reference/checked_solve.idp | deps
 	scripts/step.sh "results/liftoff*: scenes where the plate lifts off part of the rim, and FreeFEM on fitted meshes" "2 min" $(BUILD)/liftoff --out results --work $(BUILD)/liftoff-work
 
 kink: $(KINK) ## the plain space against the one that carries the kink at the rim (D31), three scenes against the series (about 40 s)
