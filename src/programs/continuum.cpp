@@ -186,24 +186,30 @@ std::string answer(const Study& s) {
   const Extrapolation& w = s.fits.at({"edge", "max w"});
   const Extrapolation& f = s.fits.at({"edge", "total force"});
   const Extrapolation& m = s.fits.at({"edge", "mean line force"});
-  std::ostringstream o;
   const RimSeries& y = s.yardstick.finest;
-  o << "**The plate's answer** (the rim-contact series, no grid; its bars are the change from the truncation before): "
-       "max w = " << rim_digits(s.yardstick.rows.back().max_w, s.yardstick.bar_max_w) << " +- " << fmt_up(s.yardstick.bar_max_w)
-    << ", total contact force = " << rim_digits(y.total_force(), s.yardstick.bar_force) << " +- "
-    << fmt_up(s.yardstick.bar_force) << ", q(0) = " << rim_digits(y.q(0), s.yardstick.bar_q0) << " +- "
-    << fmt_up(s.yardstick.bar_q0) << ", q(pi/4) = " << rim_digits(y.q(M_PI / 4), s.yardstick.bar_q45) << " +- "
-    << fmt_up(s.yardstick.bar_q45) << ".\n\n";
+  const RimAnswer& a = s.yardstick;
+  // Each estimate with its bar and how it was found: a cell of a sentence, as a verdict's is of a table.
   auto one = [](const Extrapolation& e) {
     return fmt_above(e.limit, e.limit_noise, 9, 'g') + " +- " + bar_number(e, 2) + " (" +
            (bar_is_roundoff(e) ? "the round-off bound; " : "") +
            (e.steady ? "Richardson, order " + format_order(e.orders.back(), e.order_noise.back())
                      : "finest grid; the order is not steady") + ")";
   };
-  o << "The finite-element estimate of the same, from its own grids alone (edge sampling, exact solves on n = " << s.grids.front() << " ... " << s.grids.back()
-    << "): max w = " << one(w) << ", total contact force = " << one(f) << ", mean line force on the rim = " << one(m)
-    << ".\n";
-  return o.str();
+  return words("continuum.answer_series", {{"max_w", rim_digits(a.rows.back().max_w, a.bar_max_w)},
+                                           {"bar_w", fmt_up(a.bar_max_w)},
+                                           {"force", rim_digits(y.total_force(), a.bar_force)},
+                                           {"bar_f", fmt_up(a.bar_force)},
+                                           {"q0", rim_digits(y.q(0), a.bar_q0)},
+                                           {"bar_q0", fmt_up(a.bar_q0)},
+                                           {"q45", rim_digits(y.q(M_PI / 4), a.bar_q45)},
+                                           {"bar_q45", fmt_up(a.bar_q45)}}) +
+         "\n\n" +
+         words("continuum.answer_fe", {{"first", std::to_string(s.grids.front())},
+                                       {"last", std::to_string(s.grids.back())},
+                                       {"max_w", one(w)},
+                                       {"force", one(f)},
+                                       {"line", one(m)}}) +
+         "\n";
 }
 
 // A sampling's name as a caption begins with it.
