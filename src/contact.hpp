@@ -1,6 +1,7 @@
 // What the paper computes after the solve: w and its derivatives anywhere, the contact force (9),
 // the bending moments and the contact set.
 #pragma once
+#include <cmath>
 #include <vector>
 
 #include "problem.hpp"
@@ -76,5 +77,14 @@ NodalFields nodal_fields(const Problem& p, const VectorXd& w, double eps, double
 // The same with the force density at the sample points given (the exact solver's multipliers).
 NodalFields nodal_fields(const Problem& p, const VectorXd& w, const VectorXd& xi_samples,
                          double nu);
+
+// The nodal fields' extremes, which the report gives beside the field's own (extrema.hpp): the
+// largest nodal w and where, the largest |w|, xi and |m12| at a node, and the nodes in contact.
+struct NodalExtremes {
+  int argmax_w = 0;
+  double max_w = -INFINITY, max_abs_w = 0, max_xi = 0, max_abs_m12 = 0;
+  std::vector<int> contact;
+};
+NodalExtremes nodal_extremes(const NodalFields& f);
 
 }  // namespace plate

@@ -512,8 +512,11 @@ int solve_and_write(const Options& o, Run& r, plate::Clock::time_point t0) {
   }
   const Problem& problem = r.exact ? scene.whole() : *penalised;
   progress.stage(result.converged ? "solved; writing the outputs" : "not converged; writing the outputs");
-  // Everything the outputs state is computed here, each once; below, it is only written.
+  // What the outputs state of the answer is computed here, once; below it is formatted, then written.
   const NodalFields nodes = nodal_fields(problem, result.w, xi, o.nu);
+  r.report.nodal = nodal_extremes(nodes);
+  r.report.total_force = total_contact_force(problem, xi);
+  r.report.violation = (problem.phi - problem.sampling.S * result.w).cwiseMax(0.0).maxCoeff();
   r.report.dip_below_edge = dip_below_edge(problem, result.w);
   r.report.xi = xi;
   r.report.line = line_force(problem, xi);

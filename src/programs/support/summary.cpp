@@ -22,23 +22,6 @@ std::string csv_num(double v) {
   std::snprintf(b, sizeof b, "%.10g", v);
   return b;
 }
-
-struct Extremes {
-  int argmax_w = 0;
-  double max_w = -INFINITY, max_abs_w = 0, max_xi = 0, max_abs_m12 = 0;
-  std::vector<int> contact;
-};
-Extremes extremes(const NodalFields& f) {
-  Extremes e;
-  for (int k = 0; k < f.size(); ++k) {
-    if (f.w[k] > e.max_w) e.max_w = f.w[k], e.argmax_w = k;
-    e.max_abs_w = std::max(e.max_abs_w, std::abs(f.w[k]));
-    e.max_xi = std::max(e.max_xi, f.xi[k]);
-    e.max_abs_m12 = std::max(e.max_abs_m12, std::abs(f.m12[k]));
-    if (f.contact[k]) e.contact.push_back(k);
-  }
-  return e;
-}
 }  // namespace
 
 std::string nodal_csv(const NodalFields& f) {
@@ -176,7 +159,7 @@ std::string summary_json(const Report& r) {
   const Problem& p = *r.problem;
   const SolveResult& s = *r.result;
   const NodalFields& f = *r.nodes;
-  const Extremes e = extremes(f);
+  const NodalExtremes& e = r.nodal;
   const VectorXd& xi = r.xi;
   Json j;
   j["config"] = Json::object();
@@ -200,14 +183,14 @@ std::string summary_json(const Report& r) {
   j["w_at_points"] = Json::array();
   for (size_t k = 0; k < r.points.size(); ++k)
     j["w_at_points"].push_back({{"x", number(r.points[k].first)}, {"y", number(r.points[k].second)}, {"w", number(r.measures.w_at.at(k))}});
-  j["total_contact_force"] = number(total_contact_force(p, xi));
+  j["total_contact_force"] = number(r.total_force);
   j["max_xi_samples"] = number(xi.size() ? xi.maxCoeff() : 0.0);
   j["max_xi_nodes"] = number(e.max_xi);
   j["max_abs_m12"] = number(r.measures.max_abs_m12.value);
   j["max_abs_m12_at"] = {number(r.measures.max_abs_m12.x), number(r.measures.max_abs_m12.y)};
   j["max_abs_m12_nodes"] = number(e.max_abs_m12);
   j["line_force"] = line_force_json(r.line);
-  j["constraint_violation"] = number((p.phi - p.sampling.S * s.w).cwiseMax(0.0).maxCoeff());
+  j["constraint_violation"] = number(r.violation);
   j["dip_below_edge"] = number(r.dip_below_edge);
   check_json(j, r);
   // What each bound is about: the certificate, the discrete answer; the error bars, the plate's.
@@ -229,8 +212,7 @@ std::string summary_json(const Report& r) {
 std::string summary_text(const Report& r) {
   const SolveResult& s = *r.result;
   const NodalFields& f = *r.nodes;
-  const Extremes e = extremes(f);
-  const VectorXd& xi = r.xi;
+  const NodalExtremes& e = r.nodal;
   std::ostringstream o;
   o << (s.converged ? "converged" : "NOT CONVERGED: " + s.message) << "\n";
   o << "solved on: " << r.model;
@@ -247,7 +229,7 @@ std::string summary_text(const Report& r) {
     << summary_value(f.y[e.argmax_w]) << "))\n";
   for (size_t k = 0; k < r.points.size(); ++k)
     o << "w(" << summary_value(r.points[k].first) << ", " << summary_value(r.points[k].second) << ") = " << summary_value(r.measures.w_at.at(k)) << "\n";
-  o << "total contact force = " << summary_value(total_contact_force(*r.problem, xi)) << ", max xi at nodes = "
+  o << "total contact force = " << summary_value(r.total_force) << ", max xi at nodes = "
     << summary_value(e.max_xi) << ", max |m12| = " << summary_value(r.measures.max_abs_m12.value) << " at (" << summary_value(r.measures.max_abs_m12.x) << ", "
     << summary_value(r.measures.max_abs_m12.y) << ") (at the nodes " << summary_value(e.max_abs_m12) << "), contact nodes: " << e.contact.size() << "\n";
   if (!r.line.empty()) {

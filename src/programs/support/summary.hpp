@@ -34,6 +34,9 @@ struct Report {
   // The extremes of the finite-element fields over the plate and w_h at `points` (extrema.hpp),
   // measured by the program before it reports; the nodal ones are read off `nodes`.
   FieldMeasures measures;
+  NodalExtremes nodal;        // of *nodes
+  double total_force = NAN;   // the contact force, summed over the sample rows
+  double violation = NAN;     // max over the rows of phi - S w, 0 if none lies below
   // How the rows on a circle were laid out (D28): spline arcs, point rows, those added by exchange, layouts tried.
   int rim_arcs = -1, rim_points = 0, rim_exchanged = 0, rim_layouts = 0;
   // Error bars on the distance to the plate's answer (error_bar.hpp), from the grids `bar_grids` of
