@@ -64,6 +64,7 @@ TEST(Words, AMarkerThatWouldNotReadBackIsRefusedWhenWritten) {
   EXPECT_THROW(words("k", {{"v", "two\nlines"}}), std::invalid_argument);
   EXPECT_THROW(words("k", {{"v", "two\rlines"}}), std::invalid_argument);
   EXPECT_THROW(words("a--key"), std::invalid_argument);
+  EXPECT_THROW(words("a-"), std::invalid_argument);
   EXPECT_THROW(words("a key"), std::invalid_argument);
   EXPECT_THROW(words("k", {{"bad-name", "1"}}), std::invalid_argument);
   EXPECT_THROW(words("k", {{"n", "1"}, {"n", "2"}}), std::invalid_argument);

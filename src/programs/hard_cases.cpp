@@ -105,8 +105,11 @@ void bad_input(std::ostream& md, const std::string& plate, const std::string& ca
 }
 
 void interrupted(std::ostream& md, const std::string& plate, const std::string& scratch) {
-  const Interrupted r = interrupt_run(plate, {"-n", "256", "-q"}, scratch + "/interrupt", 500);
-  md << words("hard_cases.interrupted", {{"status", r.status >= 0 ? std::to_string(r.status) : std::string("(killed)")},
+  const int n = 256, after_ms = 500;
+  const Interrupted r = interrupt_run(plate, {"-n", std::to_string(n), "-q"}, scratch + "/interrupt", after_ms);
+  md << words("hard_cases.interrupted", {{"n", std::to_string(n)},
+                                         {"after", fmt("%g", after_ms / 1000.0)},
+                                         {"status", r.status >= 0 ? std::to_string(r.status) : std::string("(killed)")},
                                          {"message", table_cell(r.message)},
                                          {"files", std::to_string(r.files_left)}})
      << "\n\n";

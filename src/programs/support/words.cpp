@@ -8,7 +8,8 @@ namespace plate {
 
 std::string words(const std::string& key, const WordValues& values) {
   static const std::regex key_chars(kWordKeyChars), name_chars(kWordNameChars);
-  if (!std::regex_match(key, key_chars) || key.find("--") != std::string::npos) throw std::invalid_argument("words: the key \"" + key + "\" is not letters, digits, '_', '.' or '-', or holds \"--\"");
+  if (!std::regex_match(key, key_chars) || key.find("--") != std::string::npos || key.back() == '-')
+    throw std::invalid_argument("words: the key \"" + key + "\" is not letters, digits, '_', '.' or '-', or holds \"--\" or ends in '-'");
   std::string out = "<!--words " + key;
   std::set<std::string> names;
   for (const auto& [name, value] : values) {

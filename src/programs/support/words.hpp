@@ -17,9 +17,10 @@ using WordValues = std::vector<std::pair<std::string, std::string>>;
 inline const std::string kWordKeyChars = R"([A-Za-z0-9_.\-]+)", kWordNameChars = "[A-Za-z0-9_]+";
 
 // <!--words key name="value" ...-->: an HTML comment, so that a Markdown viewer shows nothing false
-// where the words are not yet put in. A key is letters, digits, '_', '.' and '-'; a name letters,
-// digits and '_', each name once; a value any one line. Anything else throws std::invalid_argument:
-// a marker the renderer could not read would vanish from the page.
+// where the words are not yet put in. A key is letters, digits, '_', '.' and '-', with no "--" and
+// not ending in '-' (an HTML comment may hold neither); a name letters, digits and '_', each name
+// once; a value any one line. Anything else throws std::invalid_argument: a marker the renderer
+// could not read would vanish from the page.
 std::string words(const std::string& key, const WordValues& values = {});
 
 // A value may quote a program's message or an option, but inside the marker it may hold neither '"'
