@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "contact.hpp"
 #include "extrema.hpp"
 #include "fixed_set.hpp"
 #include "problem.hpp"
@@ -45,7 +46,7 @@ struct ExactOptions {
   // Measure every grid's answer of a sequence as it is done (extrema.hpp: FieldMeasures, with this
   // nu, at these points), into its ExactLevel: the values error bars are put on. Unset: none.
   struct LevelMeasures {
-    double nu = 0.3;
+    double nu = kPoissonRatio;
     std::vector<std::pair<double, double>> points;
   };
   std::optional<LevelMeasures> measure_levels;

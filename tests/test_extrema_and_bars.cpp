@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "active_set.hpp"
+#include "contact.hpp"
 #include "error_bar.hpp"
 #include "extrema.hpp"
 #include "published.hpp"
@@ -58,6 +60,38 @@ TEST(Extrema, PatternSearchClosesInOnAKink) {
 
 // The bar on a sequence with a known limit: steady (v + C h^3 + D h^4), the bar holds the finest
 // value's error and is at most ten times it; not steady, the last difference, marked so.
+// The solver measures each grid of its sequence for the error bars (ExactOptions::measure_levels):
+// every grid, the coarse ones of the recursion included, and on the finest the same values as the
+// whole plate's answer read afterwards. The part solved is a quarter, so a point in another quarter
+// is read through the mirror lines, and the force counts the part's four images.
+TEST(ErrorBar, EveryGridOfTheSequenceIsMeasuredAsTheAnswerIs) {
+  const std::vector<std::pair<double, double>> points = {{0.3, 0.2}, {0.7, 0.8}};
+  ExactOptions o;
+  o.measure_levels = ExactOptions::LevelMeasures{kPoissonRatio, points};
+  const SceneSolution x = solve_exact_scene(paper_scene(), 32, SamplingSpec{SamplingKind::Edge, EdgeRows{}}, o, true);
+  ASSERT_TRUE(x.result.converged);
+  ASSERT_TRUE(x.mirrors.x && x.mirrors.y);
+  ASSERT_EQ(x.result.levels.size(), 3u);  // n = 8, 16, 32
+  for (size_t k = 0; k < x.result.levels.size(); ++k) {
+    const ExactLevel& l = x.result.levels[k];
+    ASSERT_TRUE(l.measures) << "level " << k;
+    EXPECT_TRUE(l.certified);
+    EXPECT_EQ(l.cells, 8 << k);
+    EXPECT_EQ(l.measures->w_at.size(), points.size());
+  }
+  const ExactLevel& fine = x.result.levels.back();
+  const FieldMeasures whole = measure_field(x.whole(), x.result.w, kPoissonRatio, points);
+  const double w = whole.max_w.value;
+  EXPECT_NEAR(fine.measures->max_w.value, w, 1e-12 * w);
+  EXPECT_NEAR(fine.measures->max_abs_m12.value, whole.max_abs_m12.value, 1e-9 * whole.max_abs_m12.value);
+  EXPECT_NEAR(fine.measures->w_at[0], whole.w_at[0], 1e-12 * w);
+  EXPECT_NEAR(fine.measures->w_at[1], whole.w_at[1], 1e-12 * w);
+  EXPECT_NEAR(fine.measures->w_at[1], fine.measures->w_at[0], 1e-12 * w);  // mirror images on the paper's square
+  const double force = total_contact_force(x.whole(), x.result.lambda);
+  EXPECT_NEAR(fine.force, force, 1e-12 * force);
+  EXPECT_GT(std::abs(x.result.levels.front().force - force), 1e-6 * force);  // the coarse grid's own, not a copy
+}
+
 TEST(ErrorBar, HoldsTheErrorOfASteadySequenceAndSaysWhenItIsNotSteady) {
   std::vector<double> v;
   for (int k = 0; k < 4; ++k) {
