@@ -10,6 +10,10 @@
 
 namespace plate {
 
+// The angles at which a line load on a circle is listed (plate --line-csv) and searched for its
+// extremes, equally spaced from 0: the same set for every scheme, so runs compare point by point.
+constexpr int kLineLoadAngles = 720;
+
 struct LineForce {
   std::vector<double> theta, q;  // at each edge point (theta: circles only)
   double length = 0;             // of the edge curve

@@ -287,7 +287,6 @@ struct Run {
   bool exact = false;
   plate::SolveOptions opt;
   plate::ExactOptions exact_opt;
-  double nu = plate::kPoissonRatio;
   plate::Mirrors mirrors;  // the exact scheme's, found once (none with --symmetry none)
   bool estimate = true;
   plate::Report report;
@@ -312,6 +311,34 @@ plate::EdgeRows parse_edge_rows(const std::string& text) {
   }
   if (*end != '\0' || !(degree >= 1 && degree <= 5 && degree == std::floor(degree))) throw std::invalid_argument(bad);
   return plate::EdgeRows::splines(static_cast<int>(degree), cells);
+}
+
+// The --point options, each inside the plate; throws std::invalid_argument naming --point.
+std::vector<std::pair<double, double>> points_of(const Options& o) {
+  std::vector<std::pair<double, double>> points;
+  for (const auto& p : o.points) points.push_back(parse_pair("--point", p));
+  for (const auto& [x, y] : points)
+    if (x < 0 || x > o.lx || y < 0 || y > o.ly)
+      throw std::invalid_argument("--point " + std::to_string(x) + "," + std::to_string(y) + " is outside the plate");
+  return points;
+}
+
+// Every output of a run, formatted whole before any is written (empty: not asked for).
+struct Outputs {
+  std::string csv, json, line_csv, summary;
+};
+
+// Writes the files whole, prints the summary, and says why a run is not an answer; the exit status.
+int write_outputs(const Options& o, const Outputs& out, bool converged, const std::string& message) {
+  if (!o.csv_path.empty()) plate::write_file_atomically(o.csv_path, out.csv);
+  if (!o.json_path.empty()) plate::write_file_atomically(o.json_path, out.json);
+  if (!o.line_csv_path.empty()) plate::write_file_atomically(o.line_csv_path, out.line_csv);
+  if (!o.quiet) std::cout << out.summary;
+  if (!converged) {
+    std::cerr << "plate: error: " << message << "\n";
+    return plate::kNotConverged;
+  }
+  return plate::kSuccess;
 }
 
 // Throws std::invalid_argument naming the option at fault; nothing has been written yet.
@@ -348,7 +375,7 @@ Run check(const Options& o) {
   if (use_mirrors) check_memory(part_of(r.g, plate::Mirrors{r.g.nx % 2 == 0, r.g.ny % 2 == 0}));
   if (use_mirrors) r.mirrors = find_mirrors(r.scene, r.g, r.spec);
   check_memory(part_of(r.g, r.mirrors));
-  r.nu = o.nu;
+  r.report.nu = o.nu;
   r.estimate = o.estimate == "auto";
   r.exact_opt.tol = o.tol_opt->count() ? o.opt.tol : r.exact_opt.tol;
   r.exact_opt.max_iter = o.max_iter_opt->count() ? o.opt.max_iter : r.exact_opt.max_iter;
@@ -360,10 +387,7 @@ Run check(const Options& o) {
     r.opt.continuation = false;
   }
   validate(r.opt);
-  for (const auto& p : o.points) r.report.points.push_back(parse_pair("--point", p));
-  for (const auto& [x, y] : r.report.points)
-    if (x < 0 || x > r.g.lx() || y < 0 || y > r.g.ly())
-      throw std::invalid_argument("--point " + std::to_string(x) + "," + std::to_string(y) + " is outside the plate");
+  r.report.points = points_of(o);
   return r;
 }
 
@@ -431,7 +455,7 @@ plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::Vec
       progress.stage(grid + "active-set iteration " + std::to_string(iteration) + ", " + std::to_string(held) +
                      " rows held, " + std::to_string(changed) + " to change");
   };
-  if (r.estimate) r.exact_opt.measure_levels = ExactOptions::LevelMeasures{r.nu, r.report.points};
+  if (r.estimate) r.exact_opt.measure_levels = ExactOptions::LevelMeasures{r.report.nu, r.report.points};
   scene = solve_exact_scene(r.scene, r.g.nx, r.spec, r.exact_opt, r.mirrors);
   set_error_bars(r, scene.result.levels);
   const ExactResult& exact = scene.result;
@@ -536,20 +560,12 @@ int solve_and_write(const Options& o, Run& r, plate::Clock::time_point t0) {
     bounds = "# certificate (discrete): worst relative entry " + fmt("%.2g", r.report.certificate->worst()) + "\n";
   std::istringstream bar_lines(error_bars_text(r.report));
   for (std::string line; std::getline(bar_lines, line);) bounds += "# " + line + "\n";
-  // Every output formatted first, then written: the files whole, and after them the summary.
-  const std::string csv = o.csv_path.empty() ? "" : warning + bounds + nodal_csv(nodes),
-                    json = o.json_path.empty() ? "" : summary_json(r.report),
-                    line_csv = o.line_csv_path.empty() ? "" : warning + line_force_csv(problem, r.report.line),
-                    summary = o.quiet ? "" : summary_text(r.report);
-  if (!o.csv_path.empty()) write_file_atomically(o.csv_path, csv);
-  if (!o.json_path.empty()) write_file_atomically(o.json_path, json);
-  if (!o.line_csv_path.empty()) write_file_atomically(o.line_csv_path, line_csv);
-  std::cout << summary;
-  if (!result.converged) {
-    std::cerr << "plate: error: " << result.message << "\n";
-    return kNotConverged;
-  }
-  return kSuccess;
+  r.report.converged = result.converged, r.report.message = result.message;
+  return write_outputs(o,
+                       {o.csv_path.empty() ? "" : warning + bounds + nodal_csv(nodes), o.json_path.empty() ? "" : summary_json(r.report),
+                        o.line_csv_path.empty() ? "" : warning + line_force_csv(problem, r.report.line),
+                        o.quiet ? "" : summary_text(r.report)},
+                       result.converged, result.message);
 }
 
 // --scheme semi-analytic: the cylinder's scene by the rim-contact series (rim_contact.hpp), no grid.
@@ -563,11 +579,8 @@ int solve_semi_analytic(const CLI::App& app, const Options& o, plate::Clock::tim
   const Scene scene = scene_of(o);
   rim_scene(scene);  // the series models a cylinder under a uniform load; it refuses anything else by name
   check_outputs({{o.json_opt, o.json_path}, {o.line_csv_opt, o.line_csv_path}});
-  RimReport report;
-  for (const auto& p : o.points) report.points.push_back(parse_pair("--point", p));
-  for (const auto& [x, y] : report.points)
-    if (x < 0 || x > o.lx || y < 0 || y > o.ly)
-      throw std::invalid_argument("--point " + std::to_string(x) + "," + std::to_string(y) + " is outside the plate");
+  Report report;
+  report.points = points_of(o);
   const std::vector<std::string> modelled = {"--lx", "--ly", "--obstacle", "--obstacle-height", "--radius", "--centre",
                                             "--load", "--scheme", "--nu", "--point", "--json", "--line-csv", "--quiet"};
   for (const auto* opt : all_options(app)) {
@@ -582,9 +595,9 @@ int solve_semi_analytic(const CLI::App& app, const Options& o, plate::Clock::tim
   }
   // The last three truncations: enough for a bar that has been seen to shrink (rim_series shows all six).
   const RimAnswer answer = rim_answer(scene, 6, false, 3);
-  report.answer = &answer;
+  report.series = &answer;
   report.nu = o.nu;
-  report.max_abs_m12 = rim_max_abs_m12(answer.finest, o.nu);
+  report.measures.max_abs_m12.value = rim_max_abs_m12(answer.finest, o.nu);
   report.converged = answer.premise.holds && answer.settled;
   if (!answer.premise.holds)
     report.message = "the contact is not the whole rim (" + answer.premise.why +
@@ -593,14 +606,10 @@ int solve_semi_analytic(const CLI::App& app, const Options& o, plate::Clock::tim
     report.message = "the series has not settled: its last change is not below the one before";
   report.seconds_total = seconds_since(t0);
   const std::string warning = report.converged ? "" : "# NOT CONVERGED: " + report.message + "\n";
-  if (!o.json_path.empty()) write_file_atomically(o.json_path, rim_summary_json(report));
-  if (!o.line_csv_path.empty()) write_file_atomically(o.line_csv_path, warning + rim_line_csv(answer.finest));
-  if (!o.quiet) std::cout << rim_summary_text(report);
-  if (!report.converged) {
-    std::cerr << "plate: error: " << report.message << "\n";
-    return kNotConverged;
-  }
-  return kSuccess;
+  return write_outputs(o,
+                       {"", o.json_path.empty() ? "" : rim_summary_json(report),
+                        o.line_csv_path.empty() ? "" : warning + rim_line_csv(answer.finest), o.quiet ? "" : rim_summary_text(report)},
+                       report.converged, report.message);
 }
 
 }  // namespace

@@ -67,8 +67,8 @@ std::string rim_line_csv(const RimSeries& s, int angles) {
   return o.str();
 }
 
-std::string rim_summary_json(const RimReport& r) {
-  const RimAnswer& a = *r.answer;
+std::string rim_summary_json(const Report& r) {
+  const RimAnswer& a = *r.series;
   const RimSeries& s = a.finest;
   const RimPeak peak = finest_peak(a);
   Json j;
@@ -84,11 +84,11 @@ std::string rim_summary_json(const RimReport& r) {
   for (const auto& [x, y] : r.points) j["w_at_points"].push_back({{"x", number(x)}, {"y", number(y)}, {"w", number(s.w(x, y))}});
   j["total_contact_force"] = number(s.total_force());
   j["total_contact_force_bar"] = number(a.bar_force);
-  j["max_abs_m12"] = number(std::isfinite(r.max_abs_m12) ? r.max_abs_m12 : rim_max_abs_m12(s, r.nu));
-  Json line = {{"angles", kRimAngles}, {"length", number(2 * M_PI * s.scene.radius)}, {"total", number(s.total_force())},
+  j["max_abs_m12"] = number(r.measures.max_abs_m12.value);
+  Json line = {{"angles", kLineLoadAngles}, {"length", number(2 * M_PI * s.scene.radius)}, {"total", number(s.total_force())},
                {"mean", number(s.q_cos.empty() ? NAN : s.q_cos[0])}};
   double lo = INFINITY, hi = -INFINITY;
-  for (int k = 0; k < kRimAngles; ++k) lo = std::min(lo, s.q(theta_at(k, kRimAngles))), hi = std::max(hi, s.q(theta_at(k, kRimAngles)));
+  for (int k = 0; k < kLineLoadAngles; ++k) lo = std::min(lo, s.q(theta_at(k, kLineLoadAngles))), hi = std::max(hi, s.q(theta_at(k, kLineLoadAngles)));
   line["min"] = number(lo), line["max"] = number(hi);
   line["q_theta_0"] = number(s.q(0)), line["q_theta_0_bar"] = number(a.bar_q0);
   line["q_theta_pi_4"] = number(s.q(M_PI / 4)), line["q_theta_pi_4_bar"] = number(a.bar_q45);
@@ -112,8 +112,8 @@ std::string rim_summary_json(const RimReport& r) {
   return j.dump(2) + "\n";
 }
 
-std::string rim_summary_text(const RimReport& r) {
-  const RimAnswer& a = *r.answer;
+std::string rim_summary_text(const Report& r) {
+  const RimAnswer& a = *r.series;
   const RimSeries& s = a.finest;
   const RimPeak peak = finest_peak(a);
   std::ostringstream o;
@@ -123,7 +123,7 @@ std::string rim_summary_text(const RimReport& r) {
   o << "max w = " << series_value(peak.w) << " +- " << bar(a.bar_max_w) << " at (" << series_value(peak.x) << ", " << series_value(peak.y) << ")\n";
   for (const auto& [x, y] : r.points) o << "w(" << series_value(x) << ", " << series_value(y) << ") = " << series_value(s.w(x, y)) << "\n";
   o << "total contact force = " << series_value(s.total_force()) << " +- " << bar(a.bar_force) << ", max |m12| = "
-    << series_value(std::isfinite(r.max_abs_m12) ? r.max_abs_m12 : rim_max_abs_m12(s, r.nu)) << " (searched on the plate)\n";
+    << series_value(r.measures.max_abs_m12.value) << " (searched on the plate)\n";
   o << "line load on the rim: mean " << series_value(s.q_cos.empty() ? NAN : s.q_cos[0]) << ", q(0) = " << series_value(s.q(0)) << " +- "
     << bar(a.bar_q0) << ", q(pi/4) = " << series_value(s.q(M_PI / 4)) << " +- " << bar(a.bar_q45) << "\n";
   o << "premise (contact along the whole rim): " << (a.premise.holds ? "holds" : "FAILS: " + a.premise.why)

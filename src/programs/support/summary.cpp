@@ -40,7 +40,7 @@ std::string nodal_csv(const NodalFields& f) {
 std::string line_force_csv(const Problem& p, const LineForce& f) {
   std::ostringstream o;
   if (f.spline_degree > 0) {  // a function of the angle (D12): its values at fixed angles, comparable across grids
-    const int angles = kLineCsvAngles;
+    const int angles = kLineLoadAngles;
     const double r = f.length / (2 * M_PI);
     const double cx = p.sampling.edge.x[0] - r * std::cos(f.theta[0]), cy = p.sampling.edge.y[0] - r * std::sin(f.theta[0]);
     o << "# plate: the contact force per unit length q on the rim, the spline of the edge rows' multipliers (degree "

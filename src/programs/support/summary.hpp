@@ -9,12 +9,19 @@
 #include "error_bar.hpp"
 #include "extrema.hpp"
 #include "line_force.hpp"
+#include "rim_contact.hpp"
 #include "schemes.hpp"
 
 namespace plate {
 
+// What one run of `plate` reports, whichever model solved it: the grid's (problem, result, nodes
+// and the fields after them) or the rim-contact series' (series; rim_report.hpp writes it).
 struct Report {
   std::vector<std::pair<std::string, std::string>> config;  // every option, echoed as given
+  double nu = kPoissonRatio;
+  bool converged = false;
+  std::string message;                  // why not
+  const RimAnswer* series = nullptr;    // --scheme semi-analytic: the series' answer, and no grid
   const Problem* problem = nullptr;
   const SolveResult* result = nullptr;
   const NodalFields* nodes = nullptr;
@@ -46,9 +53,6 @@ struct Report {
   std::string bar_grids_note;  // why coarser grids of the sequence were left out, if they were
   std::string bar_note;
 };
-// The angles at which --line-csv gives a spline line load (and the semi-analytic scheme its own).
-constexpr int kLineCsvAngles = 720;
-
 std::string nodal_csv(const NodalFields& f);
 std::string line_force_csv(const Problem& p, const LineForce& f);
 std::string summary_json(const Report& r);
