@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -391,20 +392,27 @@ Run check(const Options& o) {
   return r;
 }
 
-// The effective value of every option, given or default, so a run can be reproduced from its output.
-void echo(const CLI::App& app, const Options& o, Run& r) {
+// The effective value of every option `keep` takes, given or default (a flag: true or false), or
+// the value the model solved with where `solved` gives one (an option it rescales); printed under
+// `header` unless --quiet. So a run can be reproduced from its output, and the echo is what was solved.
+using Config = std::vector<std::pair<std::string, std::string>>;
+Config echo(const CLI::App& app, const Options& o, const std::string& header, const std::function<bool(const CLI::Option*)>& keep,
+            const std::function<std::optional<std::string>(const CLI::Option*)>& solved = {}) {
+  Config config;
   for (const auto* opt : all_options(app)) {
-    if (opt->get_name() == "--help") continue;
+    if (!keep(opt)) continue;
     std::string value = opt->count() ? CLI::detail::join(opt->reduced_results(), " ") : opt->get_default_str();
     if (value.empty()) value = "(none)";
     if (opt->get_expected_max() == 0) value = opt->count() ? "true" : "false";  // a flag
-    if (r.exact && opt == o.tol_opt) value = plate::fmt("%g", r.exact_opt.tol);
-    if (r.exact && opt == o.max_iter_opt) value = std::to_string(r.exact_opt.max_iter);
-    r.report.config.emplace_back(opt->get_name(), value);
+    if (solved)
+      if (const auto v = solved(opt)) value = *v;
+    config.emplace_back(opt->get_name(), value);
   }
-  if (o.quiet) return;
-  std::cout << "plate: " << r.g.nx << " x " << r.g.ny << " cells, h = " << r.g.h << ", " << r.g.unknowns() << " unknowns\n";
-  for (const auto& [k, v] : r.report.config) std::cout << "  " << k << " = " << v << "\n";
+  if (!o.quiet) {
+    std::cout << header << "\n";
+    for (const auto& [k, v] : config) std::cout << "  " << k << " = " << v << "\n";
+  }
+  return config;
 }
 
 // Error bars from the last four grids of the sequence (or three, or two), each certified and each
@@ -583,16 +591,9 @@ int solve_semi_analytic(const CLI::App& app, const Options& o, plate::Clock::tim
   report.points = points_of(o);
   const std::vector<std::string> modelled = {"--lx", "--ly", "--obstacle", "--obstacle-height", "--radius", "--centre",
                                             "--load", "--scheme", "--nu", "--point", "--json", "--line-csv", "--quiet"};
-  for (const auto* opt : all_options(app)) {
-    if (std::find(modelled.begin(), modelled.end(), opt->get_name()) == modelled.end()) continue;
-    std::string value = opt->count() ? CLI::detail::join(opt->reduced_results(), " ") : opt->get_default_str();
-    if (opt->get_expected_max() == 0) value = opt->count() ? "true" : "false";
-    report.config.emplace_back(opt->get_name(), value.empty() ? "(none)" : value);
-  }
-  if (!o.quiet) {
-    std::cout << "plate: the rim-contact series (no grid)\n";
-    for (const auto& [k, v] : report.config) std::cout << "  " << k << " = " << v << "\n";
-  }
+  report.config = echo(app, o, "plate: the rim-contact series (no grid)", [&](const CLI::Option* opt) {
+    return std::find(modelled.begin(), modelled.end(), opt->get_name()) != modelled.end();
+  });
   // The last three truncations: enough for a bar that has been seen to shrink (rim_series shows all six).
   const RimAnswer answer = rim_answer(scene, 6, false, 3);
   report.series = &answer;
@@ -639,7 +640,14 @@ int main(int argc, char** argv) {
   return run_guarded("plate", [&] {
     if (o.scheme == "semi-analytic") return solve_semi_analytic(app, o, t0);
     Run r = check(o);
-    echo(app, o, r);
+    std::ostringstream header;
+    header << "plate: " << r.g.nx << " x " << r.g.ny << " cells, h = " << r.g.h << ", " << r.g.unknowns() << " unknowns";
+    r.report.config = echo(app, o, header.str(), [](const CLI::Option* opt) { return opt->get_name() != "--help"; },
+                           [&](const CLI::Option* opt) -> std::optional<std::string> {
+                             if (r.exact && opt == o.tol_opt) return plate::fmt("%g", r.exact_opt.tol);
+                             if (r.exact && opt == o.max_iter_opt) return std::to_string(r.exact_opt.max_iter);
+                             return std::nullopt;
+                           });
     return solve_and_write(o, r, t0);
   });
 }
