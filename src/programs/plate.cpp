@@ -376,6 +376,7 @@ Run check(const Options& o) {
   if (use_mirrors) check_memory(part_of(r.g, plate::Mirrors{r.g.nx % 2 == 0, r.g.ny % 2 == 0}));
   if (use_mirrors) r.mirrors = find_mirrors(r.scene, r.g, r.spec);
   check_memory(part_of(r.g, r.mirrors));
+  r.report.model = describe(r.mirrors);
   r.report.nu = o.nu;
   r.estimate = o.estimate == "auto";
   r.exact_opt.tol = o.tol_opt->count() ? o.opt.tol : r.exact_opt.tol;
@@ -475,7 +476,6 @@ plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::Vec
   xi = exact.lambda;
   r.report.certificate = &exact.certificate;
   r.report.certificate_tol = r.exact_opt.tol;
-  r.report.model = describe(scene.mirrors);
   r.report.model_unknowns = scene.solved.unknowns();
   r.report.space = scene.solved.kink ? "Bogner-Fox-Schmit and " + std::to_string(scene.solved.kink->size()) +
                                            " functions carrying the kink at the rim (D31)"
