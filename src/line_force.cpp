@@ -25,9 +25,9 @@ void fit_harmonics(LineForce& f, int harmonics) {
   f.fourier.assign(a.data(), a.data() + a.size());
 }
 // A spline line load is a function of the angle: its extremes lie between the knots too. Sampled at
-// 720 angles, then each closed in on by golden sections over the two steps about the best sample.
+// the listing's angles, then each closed in on by golden sections over the two steps about the best sample.
 void refine_extremes(LineForce& f) {
-  const int angles = 720;
+  const int angles = kLineLoadAngles;
   const double step = 2 * M_PI / angles, ratio = 0.5 * (std::sqrt(5.0) - 1);
   for (double sign : {+1.0, -1.0}) {
     int best = 0;

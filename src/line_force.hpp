@@ -10,8 +10,9 @@
 
 namespace plate {
 
-// The angles at which a line load on a circle is listed (plate --line-csv) and searched for its
-// extremes, equally spaced from 0: the same set for every scheme, so runs compare point by point.
+// The angles at which a line load on a circle is listed (plate --line-csv, for every model), and
+// from which its extremes and its distance from another are searched, equally spaced from 0: the
+// same set for every scheme, so runs compare point by point.
 constexpr int kLineLoadAngles = 720;
 
 struct LineForce {
@@ -63,7 +64,7 @@ double line_force_at(const LineForce& f, double theta);
 double line_force_value(const LineForce& f, double theta);
 // The largest distance of the line load from a reference q(theta): for spline rows over `angles`
 // equal angles and the knots, for point rows at the points. NaN without angles (a polygon).
-double max_distance(const LineForce& f, const std::function<double(double)>& reference, int angles = 720);
+double max_distance(const LineForce& f, const std::function<double(double)>& reference, int angles = kLineLoadAngles);
 // The fitted (smoothed) line load sum_k a_k cos(4 k theta); NaN without a fit.
 double line_force_fit(const LineForce& f, double theta);
 

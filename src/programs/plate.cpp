@@ -314,12 +314,13 @@ plate::EdgeRows parse_edge_rows(const std::string& text) {
   return plate::EdgeRows::splines(static_cast<int>(degree), cells);
 }
 
-// The --point options, each inside the plate; throws std::invalid_argument naming --point.
-std::vector<std::pair<double, double>> points_of(const Options& o) {
+// The --point options, each inside the lx x ly plate the model solves (a grid's is its cells' own
+// extent, to round-off); throws std::invalid_argument naming --point.
+std::vector<std::pair<double, double>> points_of(const Options& o, double lx, double ly) {
   std::vector<std::pair<double, double>> points;
   for (const auto& p : o.points) points.push_back(parse_pair("--point", p));
   for (const auto& [x, y] : points)
-    if (x < 0 || x > o.lx || y < 0 || y > o.ly)
+    if (x < 0 || x > lx || y < 0 || y > ly)
       throw std::invalid_argument("--point " + std::to_string(x) + "," + std::to_string(y) + " is outside the plate");
   return points;
 }
@@ -330,6 +331,7 @@ struct Outputs {
 };
 
 // Writes the files whole, prints the summary, and says why a run is not an answer; the exit status.
+// A model without a file (the series has no nodal CSV) has refused its option before it got here.
 int write_outputs(const Options& o, const Outputs& out, bool converged, const std::string& message) {
   if (!o.csv_path.empty()) plate::write_file_atomically(o.csv_path, out.csv);
   if (!o.json_path.empty()) plate::write_file_atomically(o.json_path, out.json);
@@ -389,13 +391,13 @@ Run check(const Options& o) {
     r.opt.continuation = false;
   }
   validate(r.opt);
-  r.report.points = points_of(o);
+  r.report.points = points_of(o, r.g.lx(), r.g.ly());
   return r;
 }
 
 // The effective value of every option `keep` takes, given or default (a flag: true or false), or
-// the value the model solved with where `solved` gives one (an option it rescales); printed under
-// `header` unless --quiet. So a run can be reproduced from its output, and the echo is what was solved.
+// the value the model uses instead where `solved` gives one (the exact scheme's own tol and
+// iteration cap); printed under `header` unless --quiet, so a run can be reproduced from its output.
 using Config = std::vector<std::pair<std::string, std::string>>;
 Config echo(const CLI::App& app, const Options& o, const std::string& header, const std::function<bool(const CLI::Option*)>& keep,
             const std::function<std::optional<std::string>(const CLI::Option*)>& solved = {}) {
@@ -545,14 +547,14 @@ int solve_and_write(const Options& o, Run& r, plate::Clock::time_point t0) {
   const Problem& problem = r.exact ? scene.whole() : *penalised;
   progress.stage(result.converged ? "solved; writing the outputs" : "not converged; writing the outputs");
   // What the outputs state of the answer is computed here, once; below it is formatted, then written.
-  const NodalFields nodes = nodal_fields(problem, result.w, xi, o.nu);
+  const NodalFields nodes = nodal_fields(problem, result.w, xi, r.report.nu);
   r.report.nodal = nodal_extremes(nodes);
   r.report.total_force = total_contact_force(problem, xi);
   r.report.violation = (problem.phi - problem.sampling.S * result.w).cwiseMax(0.0).maxCoeff();
   r.report.dip_below_edge = dip_below_edge(problem, result.w);
   r.report.xi = xi;
   r.report.line = line_force(problem, xi);
-  r.report.measures = measure_field(problem, result.w, o.nu, r.report.points);
+  r.report.measures = measure_field(problem, result.w, r.report.nu, r.report.points);
   if (o.rate) r.report.lambda1h = smallest_eigenpair(problem.K, problem.M).lambda;
   r.report.problem = &problem;
   r.report.result = &result;
@@ -588,7 +590,7 @@ int solve_semi_analytic(const CLI::App& app, const Options& o, plate::Clock::tim
   rim_scene(scene);  // the series models a cylinder under a uniform load; it refuses anything else by name
   check_outputs({{o.json_opt, o.json_path}, {o.line_csv_opt, o.line_csv_path}});
   Report report;
-  report.points = points_of(o);
+  report.points = points_of(o, o.lx, o.ly);
   const std::vector<std::string> modelled = {"--lx", "--ly", "--obstacle", "--obstacle-height", "--radius", "--centre",
                                             "--load", "--scheme", "--nu", "--point", "--json", "--line-csv", "--quiet"};
   report.config = echo(app, o, "plate: the rim-contact series (no grid)", [&](const CLI::Option* opt) {
@@ -598,7 +600,7 @@ int solve_semi_analytic(const CLI::App& app, const Options& o, plate::Clock::tim
   const RimAnswer answer = rim_answer(scene, 6, false, 3);
   report.series = &answer;
   report.nu = o.nu;
-  report.measures.max_abs_m12.value = rim_max_abs_m12(answer.finest, o.nu);
+  report.measures.max_abs_m12.value = rim_max_abs_m12(answer.finest, report.nu);
   report.converged = answer.premise.holds && answer.settled;
   if (!answer.premise.holds)
     report.message = "the contact is not the whole rim (" + answer.premise.why +

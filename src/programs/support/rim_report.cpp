@@ -88,7 +88,10 @@ std::string rim_summary_json(const Report& r) {
   Json line = {{"angles", kLineLoadAngles}, {"length", number(2 * M_PI * s.scene.radius)}, {"total", number(s.total_force())},
                {"mean", number(s.q_cos.empty() ? NAN : s.q_cos[0])}};
   double lo = INFINITY, hi = -INFINITY;
-  for (int k = 0; k < kLineLoadAngles; ++k) lo = std::min(lo, s.q(theta_at(k, kLineLoadAngles))), hi = std::max(hi, s.q(theta_at(k, kLineLoadAngles)));
+  for (int k = 0; k < kLineLoadAngles; ++k) {
+    const double q = s.q(theta_at(k, kLineLoadAngles));
+    lo = std::min(lo, q), hi = std::max(hi, q);
+  }
   line["min"] = number(lo), line["max"] = number(hi);
   line["q_theta_0"] = number(s.q(0)), line["q_theta_0_bar"] = number(a.bar_q0);
   line["q_theta_pi_4"] = number(s.q(M_PI / 4)), line["q_theta_pi_4_bar"] = number(a.bar_q45);

@@ -2,10 +2,7 @@
 // convergence study, as the same summary, JSON keys and line-load CSV as the grid schemes give,
 // where a key means the same thing, and without the keys that belong to a grid.
 #pragma once
-#include <cmath>
 #include <string>
-#include <utility>
-#include <vector>
 
 #include "published.hpp"
 #include "rim_contact.hpp"

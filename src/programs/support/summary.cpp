@@ -167,8 +167,8 @@ std::string summary_json(const Report& r) {
   j["grid"] = {{"nx", p.grid.nx}, {"ny", p.grid.ny}, {"h", number(p.grid.h)}, {"unknowns", p.grid.unknowns()},
                {"sample_points", p.sampling.size()}};
   j["model"] = {{"part", r.model}, {"unknowns", r.model_unknowns > 0 ? r.model_unknowns : p.grid.unknowns()}, {"space", r.space}};
-  j["converged"] = s.converged;
-  j["message"] = s.message;
+  j["converged"] = r.converged;
+  j["message"] = r.message;
   j["eps_final"] = number(s.eps / r.eps_unit);
   j["total_iterations"] = s.total_iterations();
   j["levels"] = levels_json(s, r.eps_unit);
@@ -214,7 +214,7 @@ std::string summary_text(const Report& r) {
   const NodalFields& f = *r.nodes;
   const NodalExtremes& e = r.nodal;
   std::ostringstream o;
-  o << (s.converged ? "converged" : "NOT CONVERGED: " + s.message) << "\n";
+  o << (r.converged ? "converged" : "NOT CONVERGED: " + r.message) << "\n";
   o << "solved on: " << r.model;
   if (r.model_unknowns > 0) o << ", " << r.model_unknowns << " unknowns";
   o << "\nspace: " << r.space << "\n";

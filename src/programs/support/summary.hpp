@@ -9,17 +9,18 @@
 #include "error_bar.hpp"
 #include "extrema.hpp"
 #include "line_force.hpp"
-#include "rim_contact.hpp"
 #include "schemes.hpp"
 
 namespace plate {
 
+struct RimAnswer;  // rim_contact.hpp
+
 // What one run of `plate` reports, whichever model solved it: the grid's (problem, result, nodes
 // and the fields after them) or the rim-contact series' (series; rim_report.hpp writes it).
 struct Report {
-  std::vector<std::pair<std::string, std::string>> config;  // every option, echoed as given
+  std::vector<std::pair<std::string, std::string>> config;  // the options the model echoed (plate's echo)
   double nu = kPoissonRatio;
-  bool converged = false;
+  bool converged = false;               // the model's verdict, which every output states
   std::string message;                  // why not
   const RimAnswer* series = nullptr;    // --scheme semi-analytic: the series' answer, and no grid
   const Problem* problem = nullptr;
