@@ -289,6 +289,8 @@ struct Run {
   plate::SolveOptions opt;
   plate::ExactOptions exact_opt;
   plate::Mirrors mirrors;  // the exact scheme's, found once (none with --symmetry none)
+  std::optional<plate::Problem> penalised;  // the penalty schemes' problem, assembled before the echo
+  double L4 = 1;                            // the penalty's unit of eps, lx^4
   bool estimate = true;
   plate::Report report;
 };
@@ -397,10 +399,11 @@ Run check(const Options& o) {
 
 // The effective value of every option `keep` takes, given or default (a flag: true or false), or
 // the value the model uses instead where `solved` gives one (the exact scheme's own tol and
-// iteration cap); printed under `header` unless --quiet, so a run can be reproduced from its output.
+// iteration cap), then the values the model derived from them (`scaled`); printed under `header`
+// unless --quiet, so that a run can be reproduced from its output and the echo is what is solved.
 using Config = std::vector<std::pair<std::string, std::string>>;
 Config echo(const CLI::App& app, const Options& o, const std::string& header, const std::function<bool(const CLI::Option*)>& keep,
-            const std::function<std::optional<std::string>(const CLI::Option*)>& solved = {}) {
+            const std::function<std::optional<std::string>(const CLI::Option*)>& solved = {}, const Config& scaled = {}) {
   Config config;
   for (const auto* opt : all_options(app)) {
     if (!keep(opt)) continue;
@@ -411,6 +414,7 @@ Config echo(const CLI::App& app, const Options& o, const std::string& header, co
       if (const auto v = solved(opt)) value = *v;
     config.emplace_back(opt->get_name(), value);
   }
+  config.insert(config.end(), scaled.begin(), scaled.end());
   if (!o.quiet) {
     std::cout << header << "\n";
     for (const auto& [k, v] : config) std::cout << "  " << k << " = " << v << "\n";
@@ -511,40 +515,39 @@ plate::SolveResult solve_penalty(Run& r, const plate::Problem& problem, double L
   return result;
 }
 
-// Assemble, solve, write every output, print the summary; the exit status.
-int solve_and_write(const Options& o, Run& r, plate::Clock::time_point t0) {
+// Scale-free penalty: eps in units of L^4 (the stiffness K ~ L^-2 against eps^-1 M ~ L^2 / eps),
+// OS relative to the size of the answer, which needs the assembled problem. Done before the echo, so
+// that it states the values solved with; the exact scheme needs no scaling. On the unit square eps
+// is unchanged.
+Config scale(Run& r, plate::Progress& progress, plate::Clock::time_point t0) {
   using namespace plate;
-  Progress progress("plate", o.quiet);
-  // Scale-free penalty: eps in units of L^4 (the stiffness K ~ L^-2 against eps^-1 M ~ L^2 / eps),
-  // OS relative to the size of the answer. On the unit square eps is unchanged.
-  const double L4 = std::pow(r.g.lx(), 4);
-  r.opt.eps_start *= L4;
-  r.opt.eps_min *= L4;
-  r.opt.eps_unit = L4;
-  r.report.eps_unit = L4;
+  r.L4 = std::pow(r.g.lx(), 4);
+  r.opt.eps_start *= r.L4;
+  r.opt.eps_min *= r.L4;
+  r.opt.eps_unit = r.L4;
+  r.report.eps_unit = r.L4;
+  if (r.exact) return {};
+  progress.stage("assembling " + std::to_string(r.g.unknowns()) + " unknowns");
+  r.penalised = make_problem(r.scene, r.g, r.spec);
+  r.report.seconds_assemble = seconds_since(t0);
+  r.opt.tol *= answer_scale(*r.penalised);
+  return {{"tol (absolute: --tol times the answer's size)", fmt("%.6g", r.opt.tol)}, {"eps unit (lx^4)", fmt("%.6g", r.L4)}};
+}
+
+// Assemble, solve, write every output, print the summary; the exit status.
+int solve_and_write(const Options& o, Run& r, plate::Progress& progress, plate::Clock::time_point t0) {
+  using namespace plate;
   SceneSolution scene;
-  std::optional<Problem> penalised;
   VectorXd xi;
   SolveResult result;
   if (r.exact) {
     progress.stage("solving (exact scheme, " + o.sampling + " sampling)");
     result = solve_exactly(r, scene, xi, progress);
   } else {
-    progress.stage("assembling " + std::to_string(r.g.unknowns()) + " unknowns");
-    penalised = make_problem(r.scene, r.g, r.spec);
-    r.report.seconds_assemble = seconds_since(t0);
     progress.stage("assembled; solving (" + o.scheme + " scheme, " + o.sampling + " sampling)");
-    r.opt.tol *= answer_scale(*penalised);
-    // What is solved, after scaling: echoed before the solve, as the options were.
-    const std::vector<std::pair<std::string, std::string>> solved = {
-        {"tol (absolute: --tol times the answer's size)", fmt("%.6g", r.opt.tol)}, {"eps unit (lx^4)", fmt("%.6g", L4)}};
-    for (const auto& kv : solved) {
-      r.report.config.push_back(kv);
-      if (!o.quiet) std::cout << "  " << kv.first << " = " << kv.second << "\n";
-    }
-    result = solve_penalty(r, *penalised, L4, xi, progress);
+    result = solve_penalty(r, *r.penalised, r.L4, xi, progress);
   }
-  const Problem& problem = r.exact ? scene.whole() : *penalised;
+  const Problem& problem = r.exact ? scene.whole() : *r.penalised;
   progress.stage(result.converged ? "solved; writing the outputs" : "not converged; writing the outputs");
   // What the outputs state of the answer is computed here, once; below it is formatted, then written.
   const NodalFields nodes = nodal_fields(problem, result.w, xi, r.report.nu);
@@ -642,6 +645,8 @@ int main(int argc, char** argv) {
   return run_guarded("plate", [&] {
     if (o.scheme == "semi-analytic") return solve_semi_analytic(app, o, t0);
     Run r = check(o);
+    Progress progress("plate", o.quiet);
+    const Config scaled = scale(r, progress, t0);
     std::ostringstream header;
     header << "plate: " << r.g.nx << " x " << r.g.ny << " cells, h = " << r.g.h << ", " << r.g.unknowns() << " unknowns";
     r.report.config = echo(app, o, header.str(), [](const CLI::Option* opt) { return opt->get_name() != "--help"; },
@@ -649,7 +654,8 @@ int main(int argc, char** argv) {
                              if (r.exact && opt == o.tol_opt) return plate::fmt("%g", r.exact_opt.tol);
                              if (r.exact && opt == o.max_iter_opt) return std::to_string(r.exact_opt.max_iter);
                              return std::nullopt;
-                           });
-    return solve_and_write(o, r, t0);
+                           },
+                           scaled);
+    return solve_and_write(o, r, progress, t0);
   });
 }
