@@ -290,7 +290,6 @@ struct Run {
   plate::ExactOptions exact_opt;
   plate::Mirrors mirrors;  // the exact scheme's, found once (none with --symmetry none)
   std::optional<plate::Problem> penalised;  // the penalty schemes' problem, assembled before the echo
-  double L4 = 1;                            // the penalty's unit of eps, lx^4
   bool estimate = true;
   plate::Report report;
 };
@@ -333,14 +332,17 @@ struct Outputs {
 };
 
 // Writes the files whole, prints the summary, and says why a run is not an answer; the exit status.
-// A model without a file (the series has no nodal CSV) has refused its option before it got here.
-int write_outputs(const Options& o, const Outputs& out, bool converged, const std::string& message) {
-  if (!o.csv_path.empty()) plate::write_file_atomically(o.csv_path, out.csv);
+// A run that is not an answer says so in every output, the CSVs in their first line, so that a file
+// read later cannot be mistaken for one. A model without a file (the series has no nodal CSV) has
+// refused its option before it got here.
+int write_outputs(const Options& o, const Outputs& out, const plate::Report& report) {
+  const std::string warning = report.converged ? "" : "# NOT CONVERGED: " + report.message + "\n";
+  if (!o.csv_path.empty()) plate::write_file_atomically(o.csv_path, warning + out.csv);
   if (!o.json_path.empty()) plate::write_file_atomically(o.json_path, out.json);
-  if (!o.line_csv_path.empty()) plate::write_file_atomically(o.line_csv_path, out.line_csv);
+  if (!o.line_csv_path.empty()) plate::write_file_atomically(o.line_csv_path, warning + out.line_csv);
   if (!o.quiet) std::cout << out.summary;
-  if (!converged) {
-    std::cerr << "plate: error: " << message << "\n";
+  if (!report.converged) {
+    std::cerr << "plate: error: " << report.message << "\n";
     return plate::kNotConverged;
   }
   return plate::kSuccess;
@@ -377,8 +379,10 @@ Run check(const Options& o) {
   // The memory the model solved needs: the part the mirrors leave, for the exact scheme. A grid whose
   // smallest part would not fit is refused first, before the mirrors are looked for on all its nodes.
   const bool use_mirrors = r.exact && o.symmetry == "auto";
-  if (use_mirrors) check_memory(part_of(r.g, plate::Mirrors{r.g.nx % 2 == 0, r.g.ny % 2 == 0}));
-  if (use_mirrors) r.mirrors = find_mirrors(r.scene, r.g, r.spec);
+  if (use_mirrors) {
+    check_memory(part_of(r.g, plate::Mirrors{r.g.nx % 2 == 0, r.g.ny % 2 == 0}));
+    r.mirrors = find_mirrors(r.scene, r.g, r.spec);
+  }
   check_memory(part_of(r.g, r.mirrors));
   r.report.model = describe(r.mirrors);
   r.report.nu = o.nu;
@@ -492,9 +496,9 @@ plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::Vec
 
 // Scheme (3a) or (5a) with eps continuation; not converged if the plate sinks deeper into the
 // obstacle than tol, whatever the steps say.
-plate::SolveResult solve_penalty(Run& r, const plate::Problem& problem, double L4, plate::VectorXd& xi,
-                                 plate::Progress& progress) {
+plate::SolveResult solve_penalty(Run& r, const plate::Problem& problem, plate::VectorXd& xi, plate::Progress& progress) {
   using namespace plate;
+  const double L4 = r.opt.eps_unit;
   VectorXd last;
   if (!progress.quiet())  // the hook copies each iterate: not worth it when nothing is printed
     r.opt.on_iterate = [&](double eps, int iteration, const VectorXd& w) {
@@ -521,17 +525,17 @@ plate::SolveResult solve_penalty(Run& r, const plate::Problem& problem, double L
 // is unchanged.
 Config scale(Run& r, plate::Progress& progress, plate::Clock::time_point t0) {
   using namespace plate;
-  r.L4 = std::pow(r.g.lx(), 4);
-  r.opt.eps_start *= r.L4;
-  r.opt.eps_min *= r.L4;
-  r.opt.eps_unit = r.L4;
-  r.report.eps_unit = r.L4;
+  const double L4 = std::pow(r.g.lx(), 4);
+  r.opt.eps_start *= L4;
+  r.opt.eps_min *= L4;
+  r.opt.eps_unit = L4;
+  r.report.eps_unit = L4;
   if (r.exact) return {};
   progress.stage("assembling " + std::to_string(r.g.unknowns()) + " unknowns");
   r.penalised = make_problem(r.scene, r.g, r.spec);
   r.report.seconds_assemble = seconds_since(t0);
   r.opt.tol *= answer_scale(*r.penalised);
-  return {{"tol (absolute: --tol times the answer's size)", fmt("%.6g", r.opt.tol)}, {"eps unit (lx^4)", fmt("%.6g", r.L4)}};
+  return {{"tol (absolute: --tol times the answer's size)", fmt("%.6g", r.opt.tol)}, {"eps unit (lx^4)", fmt("%.6g", L4)}};
 }
 
 // Assemble, solve, write every output, print the summary; the exit status.
@@ -545,7 +549,7 @@ int solve_and_write(const Options& o, Run& r, plate::Progress& progress, plate::
     result = solve_exactly(r, scene, xi, progress);
   } else {
     progress.stage("assembled; solving (" + o.scheme + " scheme, " + o.sampling + " sampling)");
-    result = solve_penalty(r, *r.penalised, r.L4, xi, progress);
+    result = solve_penalty(r, *r.penalised, xi, progress);
   }
   const Problem& problem = r.exact ? scene.whole() : *r.penalised;
   progress.stage(result.converged ? "solved; writing the outputs" : "not converged; writing the outputs");
@@ -564,8 +568,6 @@ int solve_and_write(const Options& o, Run& r, plate::Progress& progress, plate::
   r.report.nodes = &nodes;
   r.report.seconds_total = seconds_since(t0);
 
-  // A run that is not an answer says so in every output, so a file read later cannot be mistaken for one.
-  const std::string warning = result.converged ? "" : "# NOT CONVERGED: " + result.message + "\n";
   // The CSV says what its bounds are about, as the summary does: the certificate the discrete
   // answer, the error bars the plate's.
   std::string bounds;
@@ -575,10 +577,9 @@ int solve_and_write(const Options& o, Run& r, plate::Progress& progress, plate::
   for (std::string line; std::getline(bar_lines, line);) bounds += "# " + line + "\n";
   r.report.converged = result.converged, r.report.message = result.message;
   return write_outputs(o,
-                       {o.csv_path.empty() ? "" : warning + bounds + nodal_csv(nodes), o.json_path.empty() ? "" : summary_json(r.report),
-                        o.line_csv_path.empty() ? "" : warning + line_force_csv(problem, r.report.line),
-                        o.quiet ? "" : summary_text(r.report)},
-                       result.converged, result.message);
+                       {o.csv_path.empty() ? "" : bounds + nodal_csv(nodes), o.json_path.empty() ? "" : summary_json(r.report),
+                        o.line_csv_path.empty() ? "" : line_force_csv(problem, r.report.line), o.quiet ? "" : summary_text(r.report)},
+                       r.report);
 }
 
 // --scheme semi-analytic: the cylinder's scene by the rim-contact series (rim_contact.hpp), no grid.
@@ -611,11 +612,10 @@ int solve_semi_analytic(const CLI::App& app, const Options& o, plate::Clock::tim
   else if (!answer.settled)
     report.message = "the series has not settled: its last change is not below the one before";
   report.seconds_total = seconds_since(t0);
-  const std::string warning = report.converged ? "" : "# NOT CONVERGED: " + report.message + "\n";
   return write_outputs(o,
                        {"", o.json_path.empty() ? "" : rim_summary_json(report),
-                        o.line_csv_path.empty() ? "" : warning + rim_line_csv(answer.finest), o.quiet ? "" : rim_summary_text(report)},
-                       report.converged, report.message);
+                        o.line_csv_path.empty() ? "" : rim_line_csv(answer.finest), o.quiet ? "" : rim_summary_text(report)},
+                       report);
 }
 
 }  // namespace
