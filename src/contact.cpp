@@ -169,7 +169,6 @@ NodalExtremes nodal_extremes(const NodalFields& f) {
   NodalExtremes e;
   for (int k = 0; k < f.size(); ++k) {
     if (f.w[k] > e.max_w) e.max_w = f.w[k], e.argmax_w = k;
-    e.max_abs_w = std::max(e.max_abs_w, std::abs(f.w[k]));
     e.max_xi = std::max(e.max_xi, f.xi[k]);
     e.max_abs_m12 = std::max(e.max_abs_m12, std::abs(f.m12[k]));
     if (f.contact[k]) e.contact.push_back(k);

@@ -79,10 +79,10 @@ NodalFields nodal_fields(const Problem& p, const VectorXd& w, const VectorXd& xi
                          double nu);
 
 // The nodal fields' extremes, which the report gives beside the field's own (extrema.hpp): the
-// largest nodal w and where, the largest |w|, xi and |m12| at a node, and the nodes in contact.
+// largest nodal w and where, the largest xi and |m12| at a node, and the nodes in contact.
 struct NodalExtremes {
   int argmax_w = 0;
-  double max_w = -INFINITY, max_abs_w = 0, max_xi = 0, max_abs_m12 = 0;
+  double max_w = -INFINITY, max_xi = 0, max_abs_m12 = 0;
   std::vector<int> contact;
 };
 NodalExtremes nodal_extremes(const NodalFields& f);
