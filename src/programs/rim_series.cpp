@@ -15,6 +15,7 @@
 #include "contact.hpp"
 #include "exit_codes.hpp"
 #include "format.hpp"
+#include "published.hpp"
 #include "rim_report.hpp"
 #include "words.hpp"
 

@@ -4,7 +4,6 @@
 #pragma once
 #include <string>
 
-#include "published.hpp"
 #include "rim_contact.hpp"
 #include "summary.hpp"
 
