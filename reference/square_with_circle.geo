@@ -4,6 +4,7 @@
 // quarter of it, and a vertex at the centre; each n doubled refines every patch the same way, so
 // the errors shrink at a steady rate.
 //   gmsh -2 -format msh22 -setnumber n 4 [-setnumber lx 2 -setnumber ly 1 -setnumber cx 1 ...] square_with_circle.geo -o mesh.msh
+//   [-setnumber grade 30 -setnumber ring 2]
 // Physical tags, read by FreeFEM's gmshload as labels: 1 = clamped boundary, 2 = circle; and as
 // regions: 1 = inside the circle, 2 = outside (penalty_hct.edp -sampling disk integrates over region 1).
 If (!Exists(n))
@@ -24,8 +25,22 @@ EndIf
 If (!Exists(ly))
   ly = 1;
 EndIf
+// grade > 1 grades the ring inside the circle for the penalty's boundary layer (crosscheck_penalty):
+// its radial cells shrink geometrically towards the circle, the one at the central square `grade`
+// times the one at the circle, and there are `ring` times as many of them. The map from the cell
+// index to the radius is the same at every n, so refining still shrinks the errors steadily.
+If (!Exists(grade))
+  grade = 1;
+EndIf
+If (!Exists(ring))
+  ring = 1;
+EndIf
+If (!(grade >= 1 && grade <= 1e6 && ring >= 1 && ring == Round(ring)))
+  Error("square_with_circle.geo: grade must be in [1, 1e6] and ring a whole number >= 1 (grade = %g, ring = %g)", grade, ring);
+  Abort;
+EndIf
 N = 4 * n;      // cells along a quarter of the circle, a side of the central square, a side of the plate
-M1 = n;         // cells from the central square out to the circle
+M1 = ring * n;  // cells from the central square out to the circle
 M2 = 3 * n;     // cells from the circle out to the plate's corners
 a = 0.4 * r;    // half side of the central square
 s = Sqrt(0.5);
@@ -42,7 +57,8 @@ Line(9) = {10, 11}; Line(10) = {11, 12}; Line(11) = {12, 13}; Line(12) = {13, 10
 Line(13) = {2, 6}; Line(14) = {3, 7}; Line(15) = {4, 8}; Line(16) = {5, 9};                      // spokes in
 Line(17) = {6, 10}; Line(18) = {7, 11}; Line(19) = {8, 12}; Line(20) = {9, 13};                  // spokes out
 Transfinite Curve{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12} = N + 1;
-Transfinite Curve{13, 14, 15, 16} = M1 + 1;
+// The spokes run from the square to the circle: a progression below 1 shrinks the cells outwards.
+Transfinite Curve{13, 14, 15, 16} = M1 + 1 Using Progression grade^(-1 / Max(M1 - 1, 1));
 Transfinite Curve{17, 18, 19, 20} = M2 + 1;
 Curve Loop(1) = {1, 2, 3, 4};     Plane Surface(1) = {1};
 Curve Loop(2) = {13, 5, -14, -1}; Plane Surface(2) = {2};
