@@ -6,6 +6,7 @@
 // are the coarsest two of the cross-check: a few seconds each.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -183,4 +184,60 @@ TEST(PenaltyFreeFem, AFailedSolveGivesANonzeroExitAndNoAnswer) {
     text << in.rdbuf();
     EXPECT_EQ(text.str().find("\"converged\": true"), std::string::npos) << edp << "\n" << text.str();
   }
+}
+
+// The graded ring of the fixed-eps comparison (crosscheck_penalty's layer_grade): the circle keeps
+// its 4 n vertices a quarter, and along a spoke the radial cells shrink towards the circle so that
+// the one at the central square is `grade` times the one at the circle, with `ring` n of them. A
+// grade below 1 is refused by gmsh, which the program reports as a failure.
+TEST(PenaltyFreeFem, TheGradedRingShrinksTowardsTheCircleByItsGrade) {
+  const int n = 2;
+  const double grade = 30, r = paper_scene().cylinder->radius, a = 0.4 * r;
+  auto numbers = circle_numbers(paper_scene(), n);
+  numbers.insert(numbers.end(), {{"grade", grade}, {"ring", 2}});
+  const std::string msh = scratch().path("graded.msh");
+  gmsh_mesh(kRef + "/square_with_circle.geo", numbers, msh);
+  std::ifstream in(msh);
+  std::string line;
+  while (std::getline(in, line) && line != "$Nodes") {}
+  int nodes = 0;
+  in >> nodes;
+  int on_circle = 0;
+  std::vector<double> spoke;  // distances from the centre along the spoke to the lower right
+  for (int k = 0; k < nodes; ++k) {
+    int id;
+    double x, y, z;
+    in >> id >> x >> y >> z;
+    const double dx = x - 0.5, dy = y - 0.5, d = std::hypot(dx, dy);
+    if (std::abs(d - r) < 1e-12) ++on_circle;
+    if (dx > 0 && std::abs(dx + dy) < 1e-12 && d >= a * std::sqrt(2.0) - 1e-12 && d <= r + 1e-12) spoke.push_back(d);
+  }
+  ASSERT_TRUE(in.good()) << msh;
+  EXPECT_EQ(on_circle, 4 * 4 * n);
+  std::sort(spoke.begin(), spoke.end());
+  ASSERT_EQ(spoke.size(), size_t(2 * n + 1));
+  const double first = spoke[1] - spoke[0], last = spoke.back() - spoke[spoke.size() - 2];
+  // gmsh places a progression's points to about 1e-6 relative (measured: 30.000018 here), far
+  // from a wrong exponent (grade^(M / (M - 1)) = 93 at M = 4 cells) or no grading (1).
+  EXPECT_NEAR(first / last, grade, 1e-5 * grade);
+  for (size_t k = 2; k < spoke.size(); ++k) EXPECT_LT(spoke[k] - spoke[k - 1], spoke[k - 1] - spoke[k - 2]);
+
+  numbers.back() = {"ring", 1};
+  numbers[numbers.size() - 2] = {"grade", 0.5};
+  EXPECT_THROW(gmsh_mesh(kRef + "/square_with_circle.geo", numbers, scratch().path("refused.msh")), std::runtime_error);
+}
+
+// The total force is read from the equation (penalty_hct.edp's dual-force region): tested with a v
+// that is 1 on the disk, (D30) gives it as (Lap w, Lap v) - (f, v), which carries no 1/eps. It must
+// be the penalty's own integral wherever that is still well conditioned (eps = 1e-4 here, where the
+// two differ only by the solve's residual), for the vertex and the disk samplings, and for a load.
+TEST(PenaltyFreeFem, TheForceFromTheEquationIsThePenaltysIntegral) {
+  for (const std::string sampling : {"vertices", "disk"})
+    for (const std::string load : {"0", "-30"}) {
+      const std::string out = scratch().path("dual_" + sampling + load + ".json");
+      const nlohmann::json j = run_freefem(kPenalty, mesh(2), scene_args(paper_scene(), points()) + " -scheme nonlinear -continuation 0 -tol 1e-13 -eps 1e-4 -eps-min 1e-4 -sampling " + sampling + " -load " + load, out);
+      const double dual = j.at("total_contact_force").get<double>(), integral = j.at("force_by_penalty_integral").get<double>();
+      EXPECT_GT(integral, 1) << sampling << " " << load;
+      EXPECT_NEAR(dual, integral, 1e-10 * integral) << sampling << " load " << load;
+    }
 }
