@@ -26,9 +26,11 @@ If (!Exists(ly))
   ly = 1;
 EndIf
 // grade > 1 grades the ring inside the circle for the penalty's boundary layer (crosscheck_penalty):
-// its radial cells shrink geometrically towards the circle, the one at the central square `grade`
-// times the one at the circle, and there are `ring` times as many of them. The map from the cell
-// index to the radius is the same at every n, so refining still shrinks the errors steadily.
+// its `ring` n radial cells shrink geometrically towards the circle. The nodes sit at the fractions
+// (1 - grade^(-k/M1)) / (1 - 1/grade), k = 0 ... M1, of the way from the central square to the circle:
+// one map of k / M1 for every n, whose slope at the square is `grade` times its slope at the circle.
+// So each mesh's ring nodes are every other node of the next one, as on the uniform mesh, and the
+// errors can settle to a steady order. (The cells' own ratio, first to last, is grade^((M1-1)/M1).)
 If (!Exists(grade))
   grade = 1;
 EndIf
@@ -58,7 +60,7 @@ Line(13) = {2, 6}; Line(14) = {3, 7}; Line(15) = {4, 8}; Line(16) = {5, 9};     
 Line(17) = {6, 10}; Line(18) = {7, 11}; Line(19) = {8, 12}; Line(20) = {9, 13};                  // spokes out
 Transfinite Curve{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12} = N + 1;
 // The spokes run from the square to the circle: a progression below 1 shrinks the cells outwards.
-Transfinite Curve{13, 14, 15, 16} = M1 + 1 Using Progression grade^(-1 / Max(M1 - 1, 1));
+Transfinite Curve{13, 14, 15, 16} = M1 + 1 Using Progression grade^(-1 / M1);
 Transfinite Curve{17, 18, 19, 20} = M2 + 1;
 Curve Loop(1) = {1, 2, 3, 4};     Plane Surface(1) = {1};
 Curve Loop(2) = {13, 5, -14, -1}; Plane Surface(2) = {2};

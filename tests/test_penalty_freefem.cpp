@@ -187,50 +187,59 @@ TEST(PenaltyFreeFem, AFailedSolveGivesANonzeroExitAndNoAnswer) {
 }
 
 // The graded ring of the fixed-eps comparison (crosscheck_penalty's layer_grade): the circle keeps
-// its 4 n vertices a quarter, and along a spoke the radial cells shrink towards the circle so that
-// the one at the central square is `grade` times the one at the circle, with `ring` n of them. A
-// grade below 1 is refused by gmsh, which the program reports as a failure.
-TEST(PenaltyFreeFem, TheGradedRingShrinksTowardsTheCircleByItsGrade) {
-  const int n = 2;
-  const double grade = 30, r = paper_scene().cylinder->radius, a = 0.4 * r;
-  auto numbers = circle_numbers(paper_scene(), n);
-  numbers.insert(numbers.end(), {{"grade", grade}, {"ring", 2}});
-  const std::string msh = scratch().path("graded.msh");
-  gmsh_mesh(kRef + "/square_with_circle.geo", numbers, msh);
-  std::ifstream in(msh);
-  std::string line;
-  while (std::getline(in, line) && line != "$Nodes") {}
-  int nodes = 0;
-  in >> nodes;
-  int on_circle = 0;
-  std::vector<double> spoke;  // distances from the centre along the spoke to the lower right
-  for (int k = 0; k < nodes; ++k) {
-    int id;
-    double x, y, z;
-    in >> id >> x >> y >> z;
-    const double dx = x - 0.5, dy = y - 0.5, d = std::hypot(dx, dy);
-    if (std::abs(d - r) < 1e-12) ++on_circle;
-    if (dx > 0 && std::abs(dx + dy) < 1e-12 && d >= a * std::sqrt(2.0) - 1e-12 && d <= r + 1e-12) spoke.push_back(d);
-  }
-  ASSERT_TRUE(in.good()) << msh;
-  EXPECT_EQ(on_circle, 4 * 4 * n);
-  std::sort(spoke.begin(), spoke.end());
-  ASSERT_EQ(spoke.size(), size_t(2 * n + 1));
-  const double first = spoke[1] - spoke[0], last = spoke.back() - spoke[spoke.size() - 2];
-  // gmsh places a progression's points to about 1e-6 relative (measured: 30.000018 here), far
-  // from a wrong exponent (grade^(M / (M - 1)) = 93 at M = 4 cells) or no grading (1).
-  EXPECT_NEAR(first / last, grade, 1e-5 * grade);
-  for (size_t k = 2; k < spoke.size(); ++k) EXPECT_LT(spoke[k] - spoke[k - 1], spoke[k - 1] - spoke[k - 2]);
+// its 4 n vertices a quarter, and along a spoke the ring's nodes follow one map of k / M1 whatever
+// the level, (1 - grade^(-k/M1)) / (1 - 1/grade): each level's nodes are every other node of the next,
+// and the cells shrink towards the circle, the first grade^((M1 - 1) / M1) times the last. A grade
+// below 1 is refused by gmsh, which gmsh_mesh reports as a failure.
+TEST(PenaltyFreeFem, TheGradedRingFollowsOneMapOnEveryLevel) {
+  const Scene scene = paper_scene();
+  const Cylinder& c = *scene.cylinder;
+  const double grade = 30, a = 0.4 * c.radius;
+  // The nodes along the spoke from the central square's lower-right corner to the circle.
+  auto spoke = [&](int n, const std::string& name) {
+    auto numbers = circle_numbers(paper_scene(), n);
+    numbers.insert(numbers.end(), {{"grade", grade}, {"ring", 2}});
+    const std::string msh = scratch().path(name);
+    gmsh_mesh(kRef + "/square_with_circle.geo", numbers, msh);
+    std::ifstream in(msh);
+    std::string line;
+    while (std::getline(in, line) && line != "$Nodes") {}
+    int nodes = 0, on_circle = 0;
+    in >> nodes;
+    std::vector<double> d;
+    for (int k = 0; k < nodes; ++k) {
+      int id;
+      double x, y, z;
+      in >> id >> x >> y >> z;
+      const double dx = x - c.cx, dy = y - c.cy, r = std::hypot(dx, dy);
+      if (std::abs(r - c.radius) < 1e-12) ++on_circle;
+      if (dx > 0 && std::abs(dx + dy) < 1e-12 && r >= a * std::sqrt(2.0) - 1e-12 && r <= c.radius + 1e-12) d.push_back(r);
+    }
+    EXPECT_TRUE(in.good()) << msh;
+    EXPECT_EQ(on_circle, 4 * 4 * n) << msh;
+    std::sort(d.begin(), d.end());
+    return d;
+  };
+  const std::vector<double> coarse = spoke(2, "graded2.msh"), fine = spoke(4, "graded4.msh");
+  ASSERT_EQ(coarse.size(), 5u);  // ring 2 n = 4 cells
+  ASSERT_EQ(fine.size(), 9u);
+  const double width = coarse.back() - coarse.front();
+  // gmsh places a progression's nodes to about 1e-9 of the ring's width here.
+  for (size_t k = 0; k < coarse.size(); ++k) EXPECT_NEAR(coarse[k], fine[2 * k], 1e-7 * width) << k;
+  const double cells = coarse.size() - 1, first = coarse[1] - coarse[0], last = coarse.back() - coarse[cells - 1];
+  EXPECT_NEAR(first / last, std::pow(grade, (cells - 1) / cells), 1e-5 * grade);
+  for (size_t k = 2; k < fine.size(); ++k) EXPECT_LT(fine[k] - fine[k - 1], fine[k - 1] - fine[k - 2]);
 
-  numbers.back() = {"ring", 1};
-  numbers[numbers.size() - 2] = {"grade", 0.5};
-  EXPECT_THROW(gmsh_mesh(kRef + "/square_with_circle.geo", numbers, scratch().path("refused.msh")), std::runtime_error);
+  auto refused = circle_numbers(paper_scene(), 2);
+  refused.insert(refused.end(), {{"grade", 0.5}, {"ring", 1}});
+  EXPECT_THROW(gmsh_mesh(kRef + "/square_with_circle.geo", refused, scratch().path("refused.msh")), std::runtime_error);
 }
 
 // The total force is read from the equation (penalty_hct.edp's dual-force region): tested with a v
 // that is 1 on the disk, (D30) gives it as (Lap w, Lap v) - (f, v), which carries no 1/eps. It must
 // be the penalty's own integral wherever that is still well conditioned (eps = 1e-4 here, where the
-// two differ only by the solve's residual), for the vertex and the disk samplings, and for a load.
+// two differ only by the solve's residual), for the vertex and the disk samplings, and for a load;
+// quadrature sampling falls back to the integral.
 TEST(PenaltyFreeFem, TheForceFromTheEquationIsThePenaltysIntegral) {
   for (const std::string sampling : {"vertices", "disk"})
     for (const std::string load : {"0", "-30"}) {
@@ -240,4 +249,7 @@ TEST(PenaltyFreeFem, TheForceFromTheEquationIsThePenaltysIntegral) {
       EXPECT_GT(integral, 1) << sampling << " " << load;
       EXPECT_NEAR(dual, integral, 1e-10 * integral) << sampling << " load " << load;
     }
+  // Quadrature sampling puts penalty points where chi_h is not 1, so the script keeps the integral.
+  const nlohmann::json q = run_freefem(kPenalty, mesh(2), scene_args(paper_scene(), points()) + " -scheme nonlinear -continuation 0 -tol 1e-13 -eps 1e-4 -eps-min 1e-4 -sampling quadrature", scratch().path("dual_quadrature.json"));
+  EXPECT_EQ(q.at("total_contact_force").get<double>(), q.at("force_by_penalty_integral").get<double>());
 }
