@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <set>
+#include <tuple>
 #include <thread>
 #include <atomic>
 #include <exception>
@@ -72,7 +73,7 @@ struct Setup {
   // What this run has made in --work: the meshes (by level) and the points file, made once each and
   // then reused (never a file an earlier run left there, which may come from another .geo or have
   // been cut short), and the FreeFEM runs so far, which number their output files.
-  mutable std::set<std::pair<int, double>> meshes_made;  // (level, grade)
+  mutable std::set<std::tuple<int, double, int>> meshes_made;  // (level, grade, ring)
   mutable bool points_written = false;
   mutable std::atomic<int> penalty_runs{0};
   // FreeFEM runs at a time in the table and at fixed eps: they are independent, single-threaded, and
@@ -80,28 +81,35 @@ struct Setup {
   int jobs = std::max(1u, std::thread::hardware_concurrency());
 };
 
-// FreeFEM's mesh of level n, its ring graded by `grade` (1: uniform), meshed by this run and then
-// reused within it.
-std::string mesh(const Setup& s, int n, double grade = 1) {
-  const std::string msh = s.work + "/square" + std::to_string(n) + (grade == 1 ? "" : "_graded" + fmt("%.6g", grade)) + ".msh";
-  if (s.meshes_made.insert({n, grade}).second) {
+// FreeFEM's mesh of level n, the ring inside the circle with `ring` n radial cells graded by `grade`
+// (1, 1: the uniform O-grid), meshed by this run and then reused within it.
+struct RingGrading {
+  double grade = 1;
+  int ring = 1;
+};
+std::string mesh(const Setup& s, int n, RingGrading rg = {}) {
+  const bool uniform = rg.grade == 1 && rg.ring == 1;
+  const std::string msh = s.work + "/square" + std::to_string(n) +
+                          (uniform ? "" : "_ring" + std::to_string(rg.ring) + "_grade" + fmt("%.6g", rg.grade)) + ".msh";
+  if (s.meshes_made.insert({n, rg.grade, rg.ring}).second) {
     auto numbers = circle_numbers(s.scene, n);
-    if (grade != 1) numbers.insert(numbers.end(), {{"grade", grade}, {"ring", 2}});
+    if (!uniform) numbers.insert(numbers.end(), {{"grade", rg.grade}, {"ring", rg.ring}});
     gmsh_mesh(s.geo, numbers, msh);
   }
   return msh;
 }
 // @region layer-grade
-// How strongly FreeFEM's ring is graded at fixed eps (D30). Inside the disk the penalised plate
-// obeys Lap^2 w + eps^-1 (w - phi) = 0 where it dips, whose solutions vary on the length eps^(1/4):
-// the force sits in a layer that thin along the circle, and on a uniform mesh its cells outgrow the
-// layer as eps falls, so the increments from mesh to mesh jump about. The cell at the central
-// square is made `grade` = 2 (ring width) / eps^(1/4) times the one at the circle (at least 1), and
-// the ring gets twice the radial cells, which keeps the cells at the square within twice the uniform
-// mesh's (1.7 times at eps = 1e-8). The rule depends on eps and the circle alone, not on any answer.
-double layer_grade(const Scene& scene, double eps) {
+// How FreeFEM's ring is graded at fixed eps (D30). Inside the disk the penalised plate obeys
+// Lap^2 w + eps^-1 (w - phi) = 0 where it dips, whose solutions vary on the length eps^(1/4): the
+// force sits in a layer that thin along the circle, and on a uniform mesh its cells outgrow the
+// layer as eps falls, so the increments from mesh to mesh jump about. The ring's map from cell index
+// to radius is made `grade` = 2 (ring width) / eps^(1/4) times steeper at the central square than
+// at the circle (at least 1), and the ring gets twice the radial cells at every eps, which keeps the
+// cells at the square within twice the uniform mesh's. The rule depends on eps and the circle
+// alone, not on any answer.
+RingGrading layer_grading(const Scene& scene, double eps) {
   const double width = 0.6 * scene.cylinder->radius;  // circle to central square (the .geo's a = 0.4 r)
-  return std::max(1.0, std::round(2 * width / std::pow(eps, 0.25) * 100) / 100);
+  return {std::max(1.0, std::round(2 * width / std::pow(eps, 0.25) * 100) / 100), 2};
 }
 // @end layer-grade
 std::string points(const Setup& s) {
@@ -109,10 +117,10 @@ std::string points(const Setup& s) {
   if (!s.points_written) write_points(pts, {{s.scene.cylinder->cx, s.scene.cylinder->cy}}), s.points_written = true;
   return pts;
 }
-PenaltyRun penalty(const Setup& s, int n, const std::string& args, double R, double grade = 1) {
+PenaltyRun penalty(const Setup& s, int n, const std::string& args, double R, RingGrading rg = {}) {
   const Scene scene = at_height(s.scene, R);
   const std::string out = s.work + "/penalty" + std::to_string(++s.penalty_runs) + ".json";
-  return penalty_values(run_freefem(s.penalty, mesh(s, n, grade), scene_args(scene, points(s)) + " " + args, out));
+  return penalty_values(run_freefem(s.penalty, mesh(s, n, rg), scene_args(scene, points(s)) + " " + args, out));
 }
 // run(0) ... run(count - 1), independent FreeFEM runs, on `jobs` threads; a failure in any is
 // thrown once all have ended. The meshes, the points file and FF_LOADPATH must exist before: making
@@ -136,9 +144,9 @@ void on_workers(int jobs, size_t count, Run run) {
     if (e) std::rethrow_exception(e);
 }
 // What on_workers needs made first.
-void prepare_runs(const Setup& s, const std::vector<int>& levels, const std::vector<double>& grades = {1}) {
+void prepare_runs(const Setup& s, const std::vector<int>& levels, const std::vector<RingGrading>& gradings = {{}}) {
   for (int n : levels)
-    for (double g : grades) mesh(s, n, g);
+    for (const RingGrading& g : gradings) mesh(s, n, g);
   points(s);
   setenv("FF_LOADPATH", "/usr/lib/freefem++", 0);
 }
@@ -280,13 +288,13 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
   const Scene ours = at_height(sc, sc.cylinder->height * (1 + s.perturb));
   // FreeFEM's runs (index k L + j: eps k, mesh j) and ours (-1: each grid's path of w_eps through
   // the eps values, once) on s.jobs threads, the costliest first so that no long run starts last:
-  // FreeFEM's finest mesh from the smallest eps up (6 min down to half a minute here), then ours
+  // FreeFEM's finest mesh from the smallest eps up (the slowest a minute and a half here), then ours
   // (about a minute), then the coarser meshes. A value's round-off: the floor of Newton's
   // corrections (1e-12 of w, penalty_integral.cpp), and through the penalty eps^-1 times that over
   // the band where it acts.
-  std::vector<double> grades;
-  for (double eps : s.eps_values) grades.push_back(layer_grade(sc, eps));
-  prepare_runs(s, s.eps_levels, grades);
+  std::vector<RingGrading> gradings;
+  for (double eps : s.eps_values) gradings.push_back(layer_grading(sc, eps));
+  prepare_runs(s, s.eps_levels, gradings);
   const size_t L = s.eps_levels.size();
   std::vector<PenaltyRun> ff_runs(s.eps_values.size() * L);
   std::vector<long> order;
@@ -299,7 +307,7 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
   on_workers(s.jobs, order.size(), [&](size_t t) {
     if (const long i = order[t]; i >= 0) {
       ff_runs[i] = penalty(s, s.eps_levels[i % L], "-scheme nonlinear -sampling disk -continuation 0 -tol 1e-13" + eps_arg(s.eps_values[i / L]),
-                           sc.cylinder->height, grades[i / L]);
+                           sc.cylinder->height, gradings[i / L]);
       return;
     }
     for (int n : s.eps_ns) {
@@ -577,8 +585,8 @@ std::string eps_md(const Setup& s, const EpsPart& part) {
                                                  {"cells_last", std::to_string(4 * s.eps_levels.back())},
                                                  {"n_first", std::to_string(s.eps_ns.front())},
                                                  {"n_last", std::to_string(s.eps_ns.back())},
-                                                 {"grade_first", fmt("%.3g", layer_grade(s.scene, s.eps_values.front()))},
-                                                 {"grade_last", fmt("%.3g", layer_grade(s.scene, s.eps_values.back()))}})
+                                                 {"grade_first", fmt("%.3g", layer_grading(s.scene, s.eps_values.front()).grade)},
+                                                 {"grade_last", fmt("%.3g", layer_grading(s.scene, s.eps_values.back()).grade)}})
      << " " << words(steady == 0 ? "crosscheck_penalty.eps_cells_unsteady" : "crosscheck_penalty.eps_cells_steady") << "\n";
   // With f = 0, (2) is positively homogeneous in (phi, w): a relative change d of the obstacle's height
   // changes w_eps and the force by the same d. So a row resolves a change of the scene of its
