@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 #include <map>
 
 #include "active_set.hpp"
@@ -69,4 +71,30 @@ TEST(Peers, TheSnesviProgramRefusesAnUnknownMethodOrStartByName) {
     EXPECT_EQ(run.status, 2) << run.output;
     EXPECT_NE(run.output.find(args.substr(0, args.find(' '))), std::string::npos) << run.output;
   }
+}
+
+// make bench runs to n = 512 and make bench-large the grid of 1024 alone (--min-n): the range is
+// honoured, the report says which grids it left out and where they are run, and a range with no
+// grid in it is refused by name before any solve.
+TEST(Bench, RunsOnlyTheGridsOfItsRangeAndRefusesAnEmptyOne) {
+  const Scratch scratch("bench_range");
+  const std::string out = scratch.path("out"), answer = PLATE_SOURCE_DIR "/results/rim_answer.csv";
+  const std::string bench = "'" BUILD_DIR "/bench' --answer '" + answer + "' --paper-numbers '" PLATE_SOURCE_DIR "/reference/paper_numbers.csv'";
+  const Captured empty = run_captured(bench + " --min-n 1024 --max-exact 512 --out '" + out + "' 2>&1");
+  EXPECT_EQ(empty.status, 2) << empty.output;
+  EXPECT_NE(empty.output.find("--min-n"), std::string::npos) << empty.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  const Captured run = run_captured(bench + " --min-n 16 --max-exact 16 --max-rsls 0 --max-ssls 0 --out '" + out + "' 2>&1");
+  ASSERT_EQ(run.status, 0) << run.output;
+  std::ifstream csv(out + "/speed_vs_error.csv");
+  int rows = 0;
+  for (std::string line; std::getline(csv, line);)
+    if (!line.empty() && line[0] != '#' && line.rfind("solver,", 0) != 0) {
+      ++rows;
+      EXPECT_EQ(line.substr(line.find(',') + 1, 3), "16,") << line;
+    }
+  EXPECT_GE(rows, 3);  // baseline, exact and the penalty schemes on n = 16
+  std::ifstream md(out + "/speed_vs_error.md");
+  const std::string report((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+  EXPECT_NE(report.find("<!--words bench.not_run n=\"1024\" min=\"16\" max=\"16\"-->"), std::string::npos) << report;
 }

@@ -253,6 +253,18 @@ void bench_numbers(Numbers& num, const CsvTable& t) {
   }
 }
 
+// The grid `make bench-large` runs alone (results/large/speed_vs_error.csv): what scale costs.
+void bench_large_numbers(Numbers& num, const CsvTable& t) {
+  const std::string src = "results/large/speed_vs_error.csv";
+  const auto exact = t.where("solver", "exact");
+  if (exact.empty()) throw std::runtime_error(t.path + ": no exact rows");
+  const std::size_t r = exact.back();
+  num.put("bench.large_n", t.text(r, "n"), src + " exact: n");
+  num.put("bench.large_unknowns_million", fmt("%.2g", t.number(r, "unknowns") / 1e6), src + " exact: unknowns");
+  num.put("bench.large_seconds", fmt("%.3g", t.number(r, "seconds")), src + " exact: seconds");
+  num.put("bench.large_gib", fmt("%.1f", t.number(r, "peak_mib") / 1024), src + " exact: peak memory");
+}
+
 // The continuum study's limits (results/continuum_limits.csv): how far the nodal total force's
 // "steady" Richardson limit lies from the edge-sampling answer, in its own error bars.
 void continuum_numbers(Numbers& num, const std::string& results) {
@@ -487,6 +499,7 @@ int main(int argc, char** argv) {
     const CsvTable speed = read_csv_table(results + "/speed_vs_error.csv");
     bench_error_numbers(fixed, speed);
     bench_numbers(machine, speed);
+    bench_large_numbers(machine, read_csv_table(results + "/large/speed_vs_error.csv"));
     version_numbers(machine, results);
     rebuild_numbers(machine, results);
     write_file_atomically(out + "/numbers.csv", fixed.csv("numbers that rebuild byte for byte"));
