@@ -82,7 +82,7 @@ void check_grid_size(const plate::Grid& g) {
 }
 
 // Refuses a model that cannot fit (make_grid already refuses counts beyond an int): the estimate is
-// the exact solver's measured peak per unknown (results/speed_vs_error.md: about 3.5 KiB at
+// the exact solver's measured peak per unknown (results/large/speed_vs_error.md: about 3.5 KiB at
 // n = 1024) times the unknowns of the grid actually solved, the part of the plate its mirror lines
 // leave, against this machine's physical memory.
 void check_memory(const plate::Grid& solved) {
