@@ -186,7 +186,7 @@ TEST(PenaltyFreeFem, AFailedSolveGivesANonzeroExitAndNoAnswer) {
   }
 }
 
-// The graded ring of the fixed-eps comparison (crosscheck_penalty's layer_grade): the circle keeps
+// The graded ring of the fixed-eps comparison (crosscheck_penalty's layer_grading): the circle keeps
 // its 4 n vertices a quarter, and along a spoke the ring's nodes follow one map of k / M1 whatever
 // the level, (1 - grade^(-k/M1)) / (1 - 1/grade): each level's nodes are every other node of the next,
 // and the cells shrink towards the circle, the first grade^((M1 - 1) / M1) times the last. A grade
