@@ -239,7 +239,7 @@ TEST(PenaltyFreeFem, TheGradedRingFollowsOneMapOnEveryLevel) {
 // that is 1 on the disk, (D30) gives it as (Lap w, Lap v) - (f, v), which carries no 1/eps. It must
 // be the penalty's own integral wherever that is still well conditioned (eps = 1e-4 here, where the
 // two differ only by the solve's residual), for the vertex and the disk samplings, and for a load;
-// quadrature sampling falls back to the integral.
+// quadrature sampling, and a disk that holds clamped vertices, fall back to the integral.
 TEST(PenaltyFreeFem, TheForceFromTheEquationIsThePenaltysIntegral) {
   for (const std::string sampling : {"vertices", "disk"})
     for (const std::string load : {"0", "-30"}) {
@@ -252,4 +252,9 @@ TEST(PenaltyFreeFem, TheForceFromTheEquationIsThePenaltysIntegral) {
   // Quadrature sampling puts penalty points where chi_h is not 1, so the script keeps the integral.
   const nlohmann::json q = run_freefem(kPenalty, mesh(2), scene_args(paper_scene(), points()) + " -scheme nonlinear -continuation 0 -tol 1e-13 -eps 1e-4 -eps-min 1e-4 -sampling quadrature", scratch().path("dual_quadrature.json"));
   EXPECT_EQ(q.at("total_contact_force").get<double>(), q.at("force_by_penalty_integral").get<double>());
+  // A disk (radius 0.6 about the centre) that holds clamped vertices: chi_h would not be admissible.
+  Scene wide = paper_scene();
+  wide.cylinder->radius = 0.6;
+  const nlohmann::json c = run_freefem(kPenalty, mesh(2), scene_args(wide, points()) + " -scheme nonlinear -continuation 0 -tol 1e-13 -eps 1e-4 -eps-min 1e-4 -sampling vertices", scratch().path("dual_clamped.json"));
+  EXPECT_EQ(c.at("total_contact_force").get<double>(), c.at("force_by_penalty_integral").get<double>());
 }
