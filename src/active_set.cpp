@@ -114,7 +114,7 @@ ExactResult solve_sequenced(Problem& p, const ExactOptions& o) {
   if (o.measure_levels) {
     ExactLevel& l = r.levels.back();
     l.measures = measure_field(p, r.w, o.measure_levels->nu, o.measure_levels->points);
-    l.force = (1 << (int(p.grid.mirror_x) + int(p.grid.mirror_y))) * total_contact_force(p, r.lambda);  // (9), once per image
+    l.force = p.grid.images() * total_contact_force(p, r.lambda);  // (9), once per image
     l.certified = r.converged;
     l.enriched = p.kink.has_value();
   }

@@ -27,6 +27,9 @@ struct Grid {
   double whole_lx() const { return whole_nx() * h; }
   double whole_ly() const { return whole_ny() * h; }
   bool is_part() const { return mirror_x || mirror_y; }
+  // Copies of this part that make up the whole plate (1, 2 or 4): an integral over the whole plate
+  // of a mirror-symmetric field is this many times the part's.
+  int images() const { return (mirror_x ? 2 : 1) * (mirror_y ? 2 : 1); }
 
   // Eq. (2b): w = dw/dn = 0 on the clamped edges, imposed by giving their nodes no unknowns. A
   // node on a mirror line keeps w and the slope along the line; the slope across it and w_xy are

@@ -314,7 +314,7 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
       const Grid whole = ours.grid(n);
       const SamplingSpec spec{SamplingKind::Gauss};
       const Problem p = make_problem(ours, part_of(whole, find_mirrors(ours, whole, spec)), spec);
-      const double parts = double(p.grid.whole_nx()) * p.grid.whole_ny() / (double(p.grid.nx) * p.grid.ny);
+      const double parts = p.grid.images();
       const std::vector<VectorXd> path = penalised_path_exactly(p, s.eps_values);
       for (size_t k = 0; k < path.size(); ++k) {
         const double eps = s.eps_values[k];
