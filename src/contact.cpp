@@ -82,6 +82,10 @@ VectorXd contact_force_density(const Problem& p, const VectorXd& w, double eps) 
 
 double total_contact_force(const Problem& p, const VectorXd& xi) { return p.sampling.weights.dot(xi); }
 
+double constraint_violation(const Problem& p, const VectorXd& w) {
+  return (p.phi - p.sampling.S * w).cwiseMax(0.0).maxCoeff();
+}
+
 // @region penalty-residual
 // Eq. (2a): residual of the discrete penalised equation.
 double penalty_residual(const Problem& p, const VectorXd& w, double eps) {

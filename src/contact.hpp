@@ -49,6 +49,9 @@ VectorXd contact_force_density(const Problem& p, const VectorXd& w, double eps);
 // sum_p W_p xi_p: the total upward force of the obstacle on the plate.
 double total_contact_force(const Problem& p, const VectorXd& xi);
 
+// max_p (phi_p - (S w)_p)^+: how far w lies below the obstacle at the worst sample point (0 if at none).
+double constraint_violation(const Problem& p, const VectorXd& w);
+
 // Relative residual of the discrete penalised equation (2a) at w:
 // ||K w - F + eps^{-1} S^T W beta(S w)|| / (||K w|| + ||F||). Zero at the exact w_eps.
 double penalty_residual(const Problem& p, const VectorXd& w, double eps);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "contact.hpp"
 #include "norms.hpp"
 #include "stopwatch.hpp"
 
@@ -28,7 +29,7 @@ SweepRow sweep_row(const Problem& p, Scheme scheme, double eps, double tol, int 
   row.iterations = r.total_iterations();
   row.factorizations = r.levels.empty() ? 0 : r.levels[0].factorizations;
   row.bound = r.bound;
-  row.violation = (p.phi - p.sampling.S * r.w).cwiseMax(0.0).maxCoeff();
+  row.violation = constraint_violation(p, r.w);
   row.error = max_nodal_abs(r.w - reference);
   row.w = r.w;
   return row;

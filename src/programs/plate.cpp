@@ -509,7 +509,7 @@ plate::SolveResult solve_penalty(Run& r, const plate::Problem& problem, plate::V
     };
   SolveResult result = solve(problem, r.opt);
   xi = contact_force_density(problem, result.w, result.eps);
-  const double below = (problem.phi - problem.sampling.S * result.w).cwiseMax(0.0).maxCoeff();
+  const double below = constraint_violation(problem, result.w);
   if (result.converged && below > r.opt.tol) {  // the penalty lets the plate into the obstacle by about eps xi
     result.converged = false;
     result.message = fmt("the plate lies %.3g below the obstacle at a sample point", below) +
@@ -557,7 +557,7 @@ int solve_and_write(const Options& o, Run& r, plate::Progress& progress, plate::
   const NodalFields nodes = nodal_fields(problem, result.w, xi, r.report.nu);
   r.report.nodal = nodal_extremes(nodes);
   r.report.total_force = total_contact_force(problem, xi);
-  r.report.violation = (problem.phi - problem.sampling.S * result.w).cwiseMax(0.0).maxCoeff();
+  r.report.violation = constraint_violation(problem, result.w);
   r.report.dip_below_edge = dip_below_edge(problem, result.w);
   r.report.xi = xi;
   r.report.line = line_force(problem, xi);
