@@ -71,8 +71,10 @@ struct Run {
 // mesh (contact_hct.edp -symmetry quarter), a quarter of the unknowns: one mesh finer in the same time.
 bool mirror_symmetric(const Case& s) { return s.cx == s.lx / 2 && s.cy == s.ly / 2; }
 
+Scene scene_of(const Case& s) { return cylinder_scene(s.lx, s.ly, Cylinder{s.cx, s.cy, kRadius, kR}); }
+
 Run solve(const Case& s, const Rows& r, int n) {
-  const Scene scene = cylinder_scene(s.lx, s.ly, Cylinder{s.cx, s.cy, kRadius, kR});
+  const Scene scene = scene_of(s);
   const auto t0 = Clock::now();
   SamplingSpec spec{SamplingKind::Edge, r.rows};
   if (r.kink) spec.enrich.kind = EnrichSpec::Kind::Ring;
@@ -102,15 +104,13 @@ Run solve(const Case& s, const Rows& r, int n) {
 Run freefem(const Case& s, int m, const std::string& work) {
   const bool quarter = mirror_symmetric(s);
   const std::string base = work + "/" + std::to_string(&s - kScenes) + "_" + std::to_string(m);
-  gmsh_mesh(quarter ? "reference/quarter_square_with_circle.geo" : "reference/square_with_circle.geo",
-            {{"n", m}, {"lx", s.lx}, {"ly", s.ly}, {"cx", s.cx}, {"cy", s.cy}, {"r", kRadius}}, base + ".msh");
+  const Scene scene = scene_of(s);
+  gmsh_mesh(quarter ? "reference/quarter_square_with_circle.geo" : "reference/square_with_circle.geo", circle_numbers(scene, m),
+            base + ".msh");
   write_points(base + ".points", {{s.cx, s.cy}});
-  std::ostringstream args;
-  args.precision(17);
-  args << "-points " << base << ".points -R " << kR << " -cx " << s.cx << " -cy " << s.cy << " -r " << kRadius
-       << (quarter ? " -symmetry quarter" : "");
+  const std::string args = scene_args(scene, base + ".points") + (quarter ? " -symmetry quarter" : "");
   const auto t0 = Clock::now();
-  const nlohmann::json j = run_freefem("reference/contact_hct.edp", base + ".msh", args.str(), base + ".json");
+  const nlohmann::json j = run_freefem("reference/contact_hct.edp", base + ".msh", args, base + ".json");
   const CheckValues v = freefem_values(j, 4 * m, kRadius);
   Run run{&s, nullptr, 4 * m, v.h};
   run.seconds = seconds_since(t0);
