@@ -366,7 +366,7 @@ void against_continuum(std::ostream& md, const ByN& exact_at, const Continuum& L
      << "\n";
 }
 
-void targets(std::ostream& md, const ByN& exact_at, const ByN& baseline_at, int min_n, int max_exact, int max_baseline) {
+void targets(std::ostream& md, const ByN& exact_at, const ByN& baseline_at, const Limits& l) {
   md << "\n" << words("targets.heading") << "\n\n";
   const auto e512 = exact_at.find(512), b512 = baseline_at.find(512);
   if (e512 != exact_at.end() && b512 != baseline_at.end()) {
@@ -382,11 +382,11 @@ void targets(std::ostream& md, const ByN& exact_at, const ByN& baseline_at, int 
                                      {"mib", fmt("%.0f", e512->second->peak_mib)},
                                      {"mib_status", target_status(e512->second->peak_mib < 4096)}})
        << "\n";
-  } else if (min_n > 512 || max_exact < 512) {  // outside the range: another target's grid
-    if (min_n <= 512) md << words("bench.not_run", {{"n", "512"}, {"min", std::to_string(min_n)}, {"max", std::to_string(max_exact)}}) << "\n";
-  } else {
+  } else if (l.max_exact < 512) {
+    md << words("bench.not_run", {{"n", "512"}, {"min", std::to_string(l.min_n)}, {"max", std::to_string(l.max_exact)}}) << "\n";
+  } else if (l.min_n <= 512) {
     md << words("bench.target_512_missing") << "\n";
-  }
+  }  // else the grid is make bench's, not this run's (make bench-large)
   const auto e1024 = exact_at.find(1024);
   if (e1024 != exact_at.end())
     md << words("bench.target_1024", {{"unknowns", fmt("%.0f", e1024->second->v.at("unknowns"))},
@@ -396,7 +396,7 @@ void targets(std::ostream& md, const ByN& exact_at, const ByN& baseline_at, int 
                                       {"status", target_status(e1024->second->peak_mib < 24 * 1024)}})
        << "\n";
   else
-    md << words("bench.not_run", {{"n", "1024"}, {"min", std::to_string(min_n)}, {"max", std::to_string(max_exact)}}) << "\n";
+    md << words("bench.not_run", {{"n", "1024"}, {"min", std::to_string(l.min_n)}, {"max", std::to_string(l.max_exact)}}) << "\n";
   std::vector<double> N, T;
   for (const auto& [n, b] : baseline_at)
     if (n >= 64) N.push_back(b->v.at("unknowns")), T.push_back(b->v.at("assemble_s"));
@@ -405,7 +405,7 @@ void targets(std::ostream& md, const ByN& exact_at, const ByN& baseline_at, int 
     std::string per_unknown;
     for (size_t i = 0; i < N.size(); ++i) per_unknown += (i ? ", " : "") + fmt("%.2g", T[i] / N[i] * 1e9) + " ns";
     md << words("bench.assembly_target", {{"slope", fmt("%.2f", slope)},
-                                          {"max", std::to_string(max_baseline)},
+                                          {"max", std::to_string(l.max_baseline)},
                                           {"status", target_status(slope < 1.15)},
                                           {"per_unknown", per_unknown}})
        << "\n";
@@ -432,7 +432,7 @@ std::string report(const std::vector<Outcome>& outcomes, const ByN& exact_at, co
   if (peers) peers_table(md, outcomes, exact_at, peer);
   if (penalty) penalty_table(md, outcomes, exact_at, baseline_at);
   against_continuum(md, exact_at, c);
-  targets(md, exact_at, baseline_at, l.min_n, l.max_exact, l.max_baseline);
+  targets(md, exact_at, baseline_at, l);
   if (peers) peer_target(md, outcomes, exact_at, l.max_rsls, l.max_ssls);
   return md.str();
 }
