@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "active_set.hpp"
+#include "msh.hpp"
 #include "crosscheck.hpp"
 #include "disk_punch.hpp"
 #include "freefem.hpp"
@@ -136,16 +137,8 @@ TEST(CrossCode, FreeFemReproducesTheClampedSquareUnderUniformLoad) {
 // mirror line x = cx keeps its tag.
 void unfold_quarter_mesh(const std::string& quarter, const std::string& whole, double cx, double cy, bool half = false) {
   std::ifstream in(quarter);
+  const std::vector<std::pair<double, double>> xy = read_msh_nodes(in);
   std::string line;
-  while (std::getline(in, line) && line != "$Nodes") {}
-  int nodes = 0;
-  in >> nodes;
-  std::vector<std::pair<double, double>> xy(nodes + 1);
-  for (int k = 0; k < nodes; ++k) {
-    int id;
-    double z;
-    in >> id >> xy.at(id).first >> xy.at(id).second >> z;
-  }
   while (std::getline(in, line) && line != "$Elements") {}
   int elements = 0;
   in >> elements;

@@ -58,8 +58,6 @@ TEST(Extrema, PatternSearchClosesInOnAKink) {
   EXPECT_NEAR(e.y, 0.7071, 1e-8);
 }
 
-// The bar on a sequence with a known limit: steady (v + C h^3 + D h^4), the bar holds the finest
-// value's error and is at most ten times it; not steady, the last difference, marked so.
 // The solver measures each grid of its sequence for the error bars (ExactOptions::measure_levels):
 // every grid, the coarse ones of the recursion included, and on the finest the same values as the
 // whole plate's answer read afterwards. The part solved is a quarter, so a point in another quarter
@@ -92,6 +90,8 @@ TEST(ErrorBar, EveryGridOfTheSequenceIsMeasuredAsTheAnswerIs) {
   EXPECT_GT(std::abs(x.result.levels.front().force - force), 1e-6 * force);  // the coarse grid's own, not a copy
 }
 
+// The bar on a sequence with a known limit: steady (v + C h^3 + D h^4), the bar holds the finest
+// value's error and is at most ten times it; not steady, the last difference, marked so.
 TEST(ErrorBar, HoldsTheErrorOfASteadySequenceAndSaysWhenItIsNotSteady) {
   std::vector<double> v;
   for (int k = 0; k < 4; ++k) {

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "freefem.hpp"
+#include "msh.hpp"
 #include "paper_case.hpp"
 #include "published.hpp"
 #include "run_program.hpp"
@@ -202,16 +203,11 @@ TEST(PenaltyFreeFem, TheGradedRingFollowsOneMapOnEveryLevel) {
     const std::string msh = scratch().path(name);
     gmsh_mesh(kRef + "/square_with_circle.geo", numbers, msh);
     std::ifstream in(msh);
-    std::string line;
-    while (std::getline(in, line) && line != "$Nodes") {}
-    int nodes = 0, on_circle = 0;
-    in >> nodes;
+    const std::vector<std::pair<double, double>> nodes = read_msh_nodes(in);
+    int on_circle = 0;
     std::vector<double> d;
-    for (int k = 0; k < nodes; ++k) {
-      int id;
-      double x, y, z;
-      in >> id >> x >> y >> z;
-      const double dx = x - c.cx, dy = y - c.cy, r = std::hypot(dx, dy);
+    for (size_t k = 1; k < nodes.size(); ++k) {
+      const double dx = nodes[k].first - c.cx, dy = nodes[k].second - c.cy, r = std::hypot(dx, dy);
       if (std::abs(r - c.radius) < 1e-12) ++on_circle;
       if (dx > 0 && std::abs(dx + dy) < 1e-12 && r >= a * std::sqrt(2.0) - 1e-12 && r <= c.radius + 1e-12) d.push_back(r);
     }
