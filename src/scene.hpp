@@ -26,25 +26,35 @@ struct Scene {
   std::optional<double> uniform_load;  // the load is this constant
   std::string obstacle_text, load_text;  // as stated: for echoes and reports
 
+  // A scene is stated one attribute at a time, so that a new attribute is one new function here and
+  // no signature elsewhere carries the parts side by side:
+  //   Scene::rectangle(1.5, 1).over(Cylinder{0.75, 0.5, 0.25, 0.0625}).loaded(-1)
+  // The rectangle [0, lx] x [0, ly], with no obstacle under it and no load; throws
+  // std::invalid_argument naming --lx and --ly unless both are finite and > 0.
+  static Scene rectangle(double lx, double ly);
+  // The plate over the cylinder, its rim the edge. Throws std::invalid_argument naming --centre and
+  // --radius if the disk is not inside the rectangle, and naming the quantity if a number is not
+  // finite (or the radius not > 0).
+  Scene over(const Cylinder& c) const;
+  // Over an obstacle given as an expression in x, y (fields.hpp), with the edge of its support if it
+  // has one; throws std::invalid_argument naming --obstacle for text muparser cannot read.
+  Scene over(const std::string& expression, const EdgeCurve& edge = {}) const;
+  // Over an obstacle given as a function (a program's or a test's own), with no edge curve.
+  Scene over(Field obstacle) const;
+  // Under the uniform load f; throws std::invalid_argument naming --load if f is not finite.
+  Scene loaded(double f) const;
+  // Under a load given as a number (uniform) or an expression in x, y; throws
+  // std::invalid_argument naming --load for text muparser cannot read.
+  Scene loaded(const std::string& load) const;
+  // Under a load given as a function.
+  Scene loaded(Field load) const;
+
   // The grid of n cells along x; throws std::invalid_argument (make_grid) if ly is not a whole
   // number of cells.
   Grid grid(int n) const { return make_grid(n, lx, ly); }
 };
 
-// The cylinder on the rectangle, under the uniform load f; its rim is the edge. Throws
-// std::invalid_argument naming --centre and --radius if the disk is not inside the rectangle, and
-// naming the quantity if a number is not finite (or the radius not > 0, the sides not > 0).
-Scene cylinder_scene(double lx, double ly, const Cylinder& c, double load = 0);
 // The same scene with the cylinder at another height (the answer scales with it).
 Scene at_height(const Scene& s, double R);
-// An obstacle and a load given as expressions in x, y (fields.hpp), and the obstacle's edge if it
-// has one; a number for the load makes a uniform load. Throws std::invalid_argument naming
-// --obstacle or --load for text muparser cannot read.
-Scene expression_scene(double lx, double ly, const std::string& obstacle, const std::string& load, const EdgeCurve& edge = {});
-// An obstacle and a load given as functions (a program's or a test's own), with no edge curve.
-Scene field_scene(double lx, double ly, Field obstacle, Field load);
-// The scene under another load: a number (uniform) or an expression in x, y; throws
-// std::invalid_argument naming --load for text muparser cannot read.
-Scene with_load(const Scene& s, const std::string& load);
 
 }  // namespace plate

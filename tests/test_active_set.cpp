@@ -42,7 +42,7 @@ TEST(ExactSolver, MeetsItsCertificateOnEveryCase) {
   for (const auto& c : cases)
     for (int n : {4, 8, 16, 32}) {
       SCOPED_TRACE(std::string(c.name) + ", n = " + std::to_string(n));
-      const Problem p = make_problem(field_scene(make_grid(n).whole_lx(), make_grid(n).whole_ly(), c.obstacle, c.load), make_grid(n), SamplingSpec{SamplingKind::Nodes});
+      const Problem p = make_problem(Scene::rectangle(make_grid(n).whole_lx(), make_grid(n).whole_ly()).over(c.obstacle).loaded(c.load), make_grid(n), SamplingSpec{SamplingKind::Nodes});
       const ExactResult r = certified(p);
       for (int q = 0; q < p.phi.size(); ++q) {  // the certificate's claims, checked one by one
         EXPECT_GE(r.w[4 * q], p.phi[q] - 1e-12);

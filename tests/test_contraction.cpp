@@ -33,7 +33,7 @@ TEST(Contraction, Lambda1hConvergesToTheClampedPlateEigenvalue) {
 TEST(Contraction, WithoutContactTheLinearSchemeContractsByOneOverOnePlusEpsLambda) {
   for (SamplingKind kind : {SamplingKind::Gauss, SamplingKind::Nodes}) {
     // Uniform load f = 1 lifts the plate; phi = -1 is never reached, so every step is linear.
-    const Problem p = make_problem(field_scene(1, 1, [](double, double) { return -1.0; }, [](double, double) { return 1.0; }), make_grid(8), SamplingSpec{kind});
+    const Problem p = make_problem(Scene::rectangle(1, 1).over([](double, double) { return -1.0; }).loaded([](double, double) { return 1.0; }), make_grid(8), SamplingSpec{kind});
     const double lambda = smallest_eigenpair(p.K, p.M).lambda;
     for (double eps : {1e-3, 3e-4, 1e-4}) {
       const double q = sharp_contraction(lambda, eps);
@@ -53,7 +53,7 @@ TEST(Contraction, ARescaledDifferenceGivesTheSharpFactorToRoundOff) {
   // a power iteration; lambda_1h comes from an inverse iteration on K^{-1} M. The two agree to the
   // round-off of the iterations, where the runs' step ratios agree only to 1e-6.
   for (SamplingKind kind : {SamplingKind::Gauss, SamplingKind::Nodes}) {
-    const Problem p = make_problem(field_scene(1, 1, [](double, double) { return -1.0; }, [](double, double) { return 1.0; }), make_grid(8), SamplingSpec{kind});
+    const Problem p = make_problem(Scene::rectangle(1, 1).over([](double, double) { return -1.0; }).loaded([](double, double) { return 1.0; }), make_grid(8), SamplingSpec{kind});
     const double lambda = smallest_eigenpair(p.K, p.M).lambda;
     for (double eps : {1e-2, 1e-3, 1e-4})
       EXPECT_NEAR(settled_factor(p, eps, VectorXd::Zero(p.grid.unknowns())), sharp_contraction(lambda, eps),

@@ -195,7 +195,7 @@ TEST(EdgeSampling, CertificateHoldsWhereTouchingRowsAreDependent) {
   // more Gauss points touch than can be held independently (the rest depend on the held ones), so
   // the multipliers are not unique; the solver holds an independent set and gives the others none.
   for (const auto& [n, height] : {std::pair{6, -2e-4}, {16, -1e-4}}) {
-    const Problem p = make_problem(field_scene(make_grid(n).whole_lx(), make_grid(n).whole_ly(), uniform(height), uniform(-1)), make_grid(n), SamplingSpec{SamplingKind::Gauss});
+    const Problem p = make_problem(Scene::rectangle(make_grid(n).whole_lx(), make_grid(n).whole_ly()).over(uniform(height)).loaded(uniform(-1)), make_grid(n), SamplingSpec{SamplingKind::Gauss});
     const ExactResult r = solve_exact(p, ExactOptions{});
     ASSERT_TRUE(r.converged) << r.message;
     EXPECT_LE(r.certificate.worst(), 1e-10);

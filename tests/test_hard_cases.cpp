@@ -19,7 +19,7 @@ TEST(HardCases, PointObstacleActsAsTheClampedSquaresPointLoad) {
   // A plate lifted at its centre only is a clamped square under a central point load P, the
   // obstacle's force, so w_c / P must be the published coefficient.
   const Grid g = make_grid(64);
-  const Problem p = make_problem(field_scene(g.whole_lx(), g.whole_ly(), centre_spike(g, 0.01), uniform(0.0)), g, SamplingSpec{SamplingKind::Nodes});
+  const Problem p = make_problem(Scene::rectangle(g.whole_lx(), g.whole_ly()).over(centre_spike(g, 0.01)).loaded(uniform(0.0)), g, SamplingSpec{SamplingKind::Nodes});
   const ExactResult r = solve_exact(p, ExactOptions{});
   ASSERT_TRUE(r.converged) << r.message;
   const double coefficient = 0.01 / p.sampling.weights.dot(r.lambda);
@@ -47,7 +47,7 @@ TEST(HardCases, FlatSupportIsTouchedOnAnAreaWhereTheForceEqualsTheLoad) {
   const double q = 1.0, sag = plate_constant("uniform_centre") * q;
   const Grid g32 = make_grid(32);
   for (double factor : {1.01, 0.99}) {
-    Problem p = make_problem(field_scene(1, 1, uniform(-sag * factor), uniform(-q)), g32, SamplingSpec{SamplingKind::Nodes});
+    Problem p = make_problem(Scene::rectangle(1, 1).over(uniform(-sag * factor)).loaded(uniform(-q)), g32, SamplingSpec{SamplingKind::Nodes});
     const ExactResult r = solve_sequenced(p, ExactOptions{});
     ASSERT_TRUE(r.converged) << r.message;
     EXPECT_EQ(members(r.active) > 0, factor < 1) << "R = " << factor << " x the published sag";
@@ -55,7 +55,7 @@ TEST(HardCases, FlatSupportIsTouchedOnAnAreaWhereTheForceEqualsTheLoad) {
   int touching[2];
   for (int k : {0, 1}) {
     const Grid g = make_grid(64 << k);
-    Problem p = make_problem(field_scene(1, 1, uniform(-5e-4), uniform(-q)), g, SamplingSpec{SamplingKind::Nodes});
+    Problem p = make_problem(Scene::rectangle(1, 1).over(uniform(-5e-4)).loaded(uniform(-q)), g, SamplingSpec{SamplingKind::Nodes});
     const ExactResult r = solve_sequenced(p, ExactOptions{});
     ASSERT_TRUE(r.converged) << r.message;
     touching[k] = members(r.active);
@@ -73,7 +73,7 @@ TEST(HardCases, SixteenBumpsGiveSixteenContactRegions) {
   // A heavy load on 4 x 4 bumps (tops at -0.01, valleys at -1): the plate rests on every top and
   // nowhere else. The penalty scheme (3a), a second algorithm, must find the same.
   const Grid g = make_grid(64);
-  const Problem p = make_problem(field_scene(g.whole_lx(), g.whole_ly(), bumps(4, -1.0, -0.01), uniform(-1000.0)), g, SamplingSpec{SamplingKind::Nodes});
+  const Problem p = make_problem(Scene::rectangle(g.whole_lx(), g.whole_ly()).over(bumps(4, -1.0, -0.01)).loaded(uniform(-1000.0)), g, SamplingSpec{SamplingKind::Nodes});
   const ExactResult r = solve_exact(p, ExactOptions{});
   ASSERT_TRUE(r.converged) << r.message;
   EXPECT_EQ(contact_regions(g, r.active), 16);

@@ -31,7 +31,7 @@ TEST(FineGrid, LinearSchemeContractsAtTheRateOfTheFirstEigenvalue) {
   // error shrinks, mode by mode, by 1/(1 + eps lambda_k). The slowest mode is the first, so the
   // ratio of successive steps tends to 1/(1 + eps lambda_1h), and lambda_1h -> lambda_1. (From the
   // symmetric start w = 0 only symmetric modes are excited, the first among them.)
-  const Problem p = make_problem(field_scene(quarter(kFine).whole_lx(), quarter(kFine).whole_ly(), [](double, double) { return -1.0; }, [](double, double) { return 1.0; }), quarter(kFine), SamplingSpec{SamplingKind::Nodes});
+  const Problem p = make_problem(Scene::rectangle(quarter(kFine).whole_lx(), quarter(kFine).whole_ly()).over([](double, double) { return -1.0; }).loaded([](double, double) { return 1.0; }), quarter(kFine), SamplingSpec{SamplingKind::Nodes});
   const double eps = 1e-4;
   const std::vector<double> steps = linear_step_norms(p, eps, 40);
   ASSERT_EQ(steps.size(), 40u);

@@ -150,7 +150,7 @@ TEST(KinkEnrichment, RefusesWhereItDoesNotFit) {
 // orders of at least 3.8 between the last two grids, and n = 128 within 5e-9 (max w) and 5e-8
 // (force) of the series, where the plain space is off by 3e-7 and 4e-7.
 TEST(KinkEnrichment, ConvergesAtOrderFourAgainstTheSeries) {
-  for (const Scene& s : {paper_scene(), cylinder_scene(1, 1, Cylinder{0.45, 0.5, 0.25, 0.0625})}) {
+  for (const Scene& s : {paper_scene(), Scene::rectangle(1, 1).over(Cylinder{0.45, 0.5, 0.25, 0.0625})}) {
     const RimAnswer series = rim_answer(s, 6, false, 3);
     const RimPeak peak = series.finest.max_w();
     const double force = series.finest.total_force();
@@ -197,7 +197,7 @@ TEST(KinkEnrichment, UnfoldedFieldIsThePartsField) {
 TEST(KinkEnrichment, RowsReadTheEnrichedField) {
   SamplingSpec spec{SamplingKind::Edge};
   spec.enrich.kind = EnrichSpec::Kind::Ring;
-  const Scene s = cylinder_scene(1.5, 1, Cylinder{0.6, 0.45, 0.25, 0.0625});
+  const Scene s = Scene::rectangle(1.5, 1).over(Cylinder{0.6, 0.45, 0.25, 0.0625});
   const SceneSolution x = solve_exact_scene(s, 96, spec, ExactOptions{});
   ASSERT_TRUE(x.result.converged) << x.result.message;
   const Problem& p = x.solved;

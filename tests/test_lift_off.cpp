@@ -26,7 +26,7 @@ struct LiftOff {
 const LiftOff kScenes[] = {{2, 1, 1, 0.5, 128}, {1.5, 1, 0.75, 0.5, 96}, {1.5, 1, 0.6, 0.45, 96}};
 
 SceneSolution lift_off(const LiftOff& s, int n, EdgeRows rows = {}) {
-  SceneSolution x = solve_exact_scene(cylinder_scene(s.lx, s.ly, Cylinder{s.cx, s.cy, 0.25, 0.0625}), n,
+  SceneSolution x = solve_exact_scene(Scene::rectangle(s.lx, s.ly).over(Cylinder{s.cx, s.cy, 0.25, 0.0625}), n,
                                       SamplingSpec{SamplingKind::Edge, rows}, ExactOptions{});
   EXPECT_TRUE(x.result.converged) << x.result.message;
   EXPECT_LE(x.result.certificate.worst(), 1e-10);

@@ -84,7 +84,7 @@ TEST(Mirror, QuarterAndWholePlateGiveOneAnswerOnThePapersScene) {
 
 // A rectangle with a centred cylinder: the two mirrors of a rectangle, not the square's eight.
 TEST(Mirror, RectangleWithACentredCylinderIsSolvedOnAQuarter) {
-  const Both b = solve_both(cylinder_scene(1.5, 1.0, Cylinder{0.75, 0.5, 0.3, 0.05}), 48, SamplingSpec{SamplingKind::Edge});
+  const Both b = solve_both(Scene::rectangle(1.5, 1.0).over(Cylinder{0.75, 0.5, 0.3, 0.05}), 48, SamplingSpec{SamplingKind::Edge});
   EXPECT_TRUE(b.part.mirrors.x && b.part.mirrors.y);
   // The plate lifts off part of the rim here: rows laid out for the contact (D28), the same layout on
   // the quarter and on the whole plate.
@@ -96,7 +96,7 @@ TEST(Mirror, RectangleWithACentredCylinderIsSolvedOnAQuarter) {
 // An expression obstacle and load, symmetric in both lines, with nodal sampling (the primal-dual
 // solver, not refined: agreement to its round-off on this grid) and Gauss points.
 TEST(Mirror, SymmetricExpressionObstacleIsSolvedOnAQuarter) {
-  const Scene scene = expression_scene(1, 1, "0.02 - 2*((x-0.5)^2 + (y-0.5)^2)", "-1 - x*(1-x)");
+  const Scene scene = Scene::rectangle(1, 1).over("0.02 - 2*((x-0.5)^2 + (y-0.5)^2)").loaded("-1 - x*(1-x)");
   for (SamplingKind kind : {SamplingKind::Nodes, SamplingKind::Gauss}) {
     const Both b = solve_both(scene, 16, SamplingSpec{kind});
     EXPECT_TRUE(b.part.mirrors.x && b.part.mirrors.y) << to_string(kind);
@@ -106,12 +106,12 @@ TEST(Mirror, SymmetricExpressionObstacleIsSolvedOnAQuarter) {
 
 // A cylinder moved along x keeps the mirror y = 1/2 only: a half. Moved off both lines: the whole plate.
 TEST(Mirror, APartialSymmetryGivesAHalfAndNoneTheWholePlate) {
-  const Both b = solve_both(cylinder_scene(1, 1, Cylinder{0.4, 0.5, 0.25, 0.0625}), 32, SamplingSpec{SamplingKind::Edge});
+  const Both b = solve_both(Scene::rectangle(1, 1).over(Cylinder{0.4, 0.5, 0.25, 0.0625}), 32, SamplingSpec{SamplingKind::Edge});
   EXPECT_FALSE(b.part.mirrors.x);
   EXPECT_TRUE(b.part.mirrors.y);
   EXPECT_EQ(b.part.solved.grid.unknowns(), 4 * 31 * 16);
   expect_same(b, 1e-10, 1e-10);
-  const SceneSolution off = solve_exact_scene(cylinder_scene(1, 1, Cylinder{0.4, 0.55, 0.25, 0.0625}), 32, SamplingSpec{SamplingKind::Edge},
+  const SceneSolution off = solve_exact_scene(Scene::rectangle(1, 1).over(Cylinder{0.4, 0.55, 0.25, 0.0625}), 32, SamplingSpec{SamplingKind::Edge},
                                               ExactOptions{});
   EXPECT_FALSE(off.mirrors.any());
   EXPECT_FALSE(off.unfolded.has_value());
@@ -123,13 +123,13 @@ TEST(Mirror, MirrorsAreFoundOnlyWhereTheSceneHasThem) {
   const Scene s = paper_scene();
   const SamplingSpec edge{SamplingKind::Edge};
   EXPECT_FALSE(find_mirrors(s, make_grid(15), edge).any());
-  const Mirrors tilted = find_mirrors(with_load(s, "x"), make_grid(16), edge);
+  const Mirrors tilted = find_mirrors(s.loaded("x"), make_grid(16), edge);
   EXPECT_FALSE(tilted.x);
   EXPECT_TRUE(tilted.y);
   const Field bumpy = [](double x, double y) { return 0.01 - (x - 0.5) * (x - 0.5) - (y - 0.5) * (y - 0.5) + 1e-9 * x; };
-  EXPECT_FALSE(find_mirrors(field_scene(1, 1, bumpy, kNoLoad), make_grid(16), SamplingSpec{SamplingKind::Nodes}).x);
+  EXPECT_FALSE(find_mirrors(Scene::rectangle(1, 1).over(bumpy).loaded(kNoLoad), make_grid(16), SamplingSpec{SamplingKind::Nodes}).x);
   const Field rounded = [](double x, double y) { return 0.01 - (x - 0.5) * (x - 0.5) - (y - 0.5) * (y - 0.5) + 1e-16 * x; };
-  EXPECT_TRUE(find_mirrors(field_scene(1, 1, rounded, kNoLoad), make_grid(16), SamplingSpec{SamplingKind::Nodes}).x);
+  EXPECT_TRUE(find_mirrors(Scene::rectangle(1, 1).over(rounded).loaded(kNoLoad), make_grid(16), SamplingSpec{SamplingKind::Nodes}).x);
 }
 
 // A point of the whole plate is evaluated on the part by reflection, slopes across the line
@@ -179,11 +179,11 @@ TEST(Mirror, AnAsymmetryIsSeenWhereTheObstacleIsSmallEvenIfItIsLargeElsewhere) {
     const double r2 = (x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5);
     return 0.06 - 1000 * r2 * r2 + (r2 < 0.01 ? 1e-10 * x : 0.0);
   };
-  EXPECT_FALSE(find_mirrors(field_scene(1, 1, deep, kNoLoad), make_grid(16), SamplingSpec{SamplingKind::Nodes}).x);
+  EXPECT_FALSE(find_mirrors(Scene::rectangle(1, 1).over(deep).loaded(kNoLoad), make_grid(16), SamplingSpec{SamplingKind::Nodes}).x);
   const Field deep_symmetric = [](double x, double y) {
     const double r2 = (x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5);
     return 0.06 - 1000 * r2 * r2;
   };
-  const Mirrors both = find_mirrors(field_scene(1, 1, deep_symmetric, kNoLoad), make_grid(16), SamplingSpec{SamplingKind::Nodes});
+  const Mirrors both = find_mirrors(Scene::rectangle(1, 1).over(deep_symmetric).loaded(kNoLoad), make_grid(16), SamplingSpec{SamplingKind::Nodes});
   EXPECT_TRUE(both.x && both.y);
 }

@@ -41,7 +41,7 @@ TEST(PenaltyBound, GreensFunctionPeaksAtTheCentreAndIsThePointLoadCoefficient) {
   // where Timoshenko & Woinowsky-Krieger give 0.00560 a^2 / D for the clamped square.
   for (auto [nx, lx] : {std::pair{8, 1.0}, {12, 1.5}}) {
     const Grid g = make_grid(nx, lx, 1.0);
-    const Problem p = make_problem(field_scene(g.whole_lx(), g.whole_ly(), [](double, double) { return -1.0; }, [](double, double) { return 0.0; }), g, SamplingSpec{SamplingKind::Nodes});
+    const Problem p = make_problem(Scene::rectangle(g.whole_lx(), g.whole_ly()).over([](double, double) { return -1.0; }).loaded([](double, double) { return 0.0; }), g, SamplingSpec{SamplingKind::Nodes});
     Cholesky chol;
     chol.factorize(p.K);
     const Eigen::MatrixXd inverse = chol.solve_many(Eigen::MatrixXd::Identity(g.unknowns(), g.unknowns()));
@@ -49,7 +49,7 @@ TEST(PenaltyBound, GreensFunctionPeaksAtTheCentreAndIsThePointLoadCoefficient) {
     for (int q = 0; q < g.unknowns(); q += 4) largest = std::max(largest, inverse(q, q));
     EXPECT_DOUBLE_EQ(largest, inverse(centre_value_dof(g), centre_value_dof(g))) << "lx = " << lx;
   }
-  const Problem square = make_problem(field_scene(1, 1, [](double, double) { return -1.0; }, [](double, double) { return 0.0; }), make_grid(64), SamplingSpec{SamplingKind::Nodes});
+  const Problem square = make_problem(Scene::rectangle(1, 1).over([](double, double) { return -1.0; }).loaded([](double, double) { return 0.0; }), make_grid(64), SamplingSpec{SamplingKind::Nodes});
   Cholesky chol;
   chol.analyze(square.K);
   const PenaltyBound b = penalty_error_bound(square, VectorXd::Zero(square.grid.unknowns()), 1.0, chol);

@@ -43,8 +43,8 @@ TEST(ErrorBar, PlateBarsHoldTheDistanceToTheSeries) {
     std::string args;
     Scene scene;
   };
-  const Scene off_centre = cylinder_scene(1, 1, Cylinder{0.45, 0.5, 0.25, 0.0625});
-  const Scene oblong = cylinder_scene(1.25, 1, Cylinder{0.6, 0.45, 0.25, 0.0625});
+  const Scene off_centre = Scene::rectangle(1, 1).over(Cylinder{0.45, 0.5, 0.25, 0.0625});
+  const Scene oblong = Scene::rectangle(1.25, 1).over(Cylinder{0.6, 0.45, 0.25, 0.0625});
   const Case cases[] = {{"-n 128 --enrich none", paper_scene()},
                         {"-n 128 --enrich none --centre 0.45,0.5", off_centre},
                         {"-n 160 --enrich none --lx 1.25 --centre 0.6,0.45", oblong},

@@ -28,7 +28,7 @@ RimScene paper_rim_scene(double height = NAN) {
   if (!std::isnan(height)) s.height = height;
   return s;
 }
-Scene as_scene(const RimScene& r) { return cylinder_scene(r.lx, r.ly, Cylinder{r.cx, r.cy, r.radius, r.height}, r.load); }
+Scene as_scene(const RimScene& r) { return Scene::rectangle(r.lx, r.ly).over(Cylinder{r.cx, r.cy, r.radius, r.height}).loaded(r.load); }
 
 double laplacian(const PlateSeries& f, const SeriesTerm& t, double x, double y) {
   const PointValues v = term_values(f, t, x, y);
@@ -417,8 +417,8 @@ TEST(RimContact, RefusesScenesThatCannotHaveARimContact) {
   s = paper, s.cy = 0.8, refuses(s, "cy");   // and crosses y = ly
   s = paper, s.radius = 0.5, refuses(s, "cx");
   // A scene the series does not model, refused by the option that states it.
-  EXPECT_THROW(rim_scene(expression_scene(1, 1, "0.01 - x*x", "0")), std::invalid_argument);
-  EXPECT_THROW(rim_scene(with_load(paper_scene(), "x")), std::invalid_argument);
+  EXPECT_THROW(rim_scene(Scene::rectangle(1, 1).over("0.01 - x*x").loaded("0")), std::invalid_argument);
+  EXPECT_THROW(rim_scene(paper_scene().loaded("x")), std::invalid_argument);
   RimSeriesOptions o;
   o.degree = 1;
   EXPECT_THROW(solve_rim_series(as_scene(paper_rim_scene()), o), std::invalid_argument);

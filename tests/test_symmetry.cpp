@@ -36,7 +36,7 @@ TEST(Invariance, DeflectionHasTheEightSymmetriesOfTheSquare) {
   }
   // The check sees asymmetry when there is some: a load f = x tilts the plate.
   const Grid g = make_grid(8);
-  const Problem tilted = make_problem(field_scene(g.whole_lx(), g.whole_ly(), paper_scene().obstacle, [](double x, double) { return 10 * x; }), g, SamplingSpec{SamplingKind::Nodes});
+  const Problem tilted = make_problem(Scene::rectangle(g.whole_lx(), g.whole_ly()).over(paper_scene().obstacle).loaded([](double x, double) { return 10 * x; }), g, SamplingSpec{SamplingKind::Nodes});
   const VectorXd w = penalised(tilted);
   EXPECT_GT(asymmetry(g, w), 1e-6 * max_nodal_abs(w));
 }

@@ -25,7 +25,7 @@ using namespace plate;
 namespace {
 // f = 1 and phi = -1: the plate never reaches the obstacle, so every step is linear.
 Problem no_contact_problem(int n, SamplingKind kind) {
-  return make_problem(expression_scene(1, 1, "-1", "1"), make_grid(n), SamplingSpec{kind});
+  return make_problem(Scene::rectangle(1, 1).over("-1").loaded("1"), make_grid(n), SamplingSpec{kind});
 }
 Problem paper_problem(int n, SamplingKind kind) { return make_problem(paper_scene(), make_grid(n), SamplingSpec{kind}); }
 

@@ -140,7 +140,7 @@ void point_obstacle(std::ostream& md, const Context& c) {
         "|---:|---:|---:|---:|\n";
   for (int n : {16, 32, 64, 128}) {
     const Grid g = make_grid(n);
-    const Problem p = make_problem(field_scene(g.whole_lx(), g.whole_ly(), centre_spike(g, 0.01), uniform(0)), g, SamplingSpec{SamplingKind::Nodes});
+    const Problem p = make_problem(Scene::rectangle(g.whole_lx(), g.whole_ly()).over(centre_spike(g, 0.01)).loaded(uniform(0)), g, SamplingSpec{SamplingKind::Nodes});
     const ExactResult r = solve_exact(p, ExactOptions{});
     const double P = p.sampling.weights.dot(r.lambda);
     const std::string force = fmt("%.4f", P), ratio = fmt("%.7f", 0.01 / P),
@@ -159,7 +159,7 @@ void point_obstacle(std::ostream& md, const Context& c) {
 void flat_support(std::ostream& md, const Context& c) {
   md << "\n### A flat support: contact on an area\n\n" << words("hard_cases.flat_intro", {{"sag", fmt("%g", c.sag)}}) << "\n\n";
   for (double factor : {1.01, 0.99}) {
-    Problem sag = make_problem(field_scene(1, 1, uniform(-c.sag * factor), uniform(-1)), make_grid(32), SamplingSpec{SamplingKind::Nodes});
+    Problem sag = make_problem(Scene::rectangle(1, 1).over(uniform(-c.sag * factor)).loaded(uniform(-1)), make_grid(32), SamplingSpec{SamplingKind::Nodes});
     const ExactResult r = solve_sequenced(sag, ExactOptions{});
     md << words("hard_cases.flat_sag", {{"factor", fmt("%.2f", factor)},
                                         {"touching", std::to_string(members(r.active))},
@@ -173,7 +173,7 @@ void flat_support(std::ostream& md, const Context& c) {
   int previous = 0;
   for (int n : {32, 64, 128, 256}) {
     const Grid g = make_grid(n);
-    Problem p = make_problem(field_scene(g.whole_lx(), g.whole_ly(), uniform(-5e-4), uniform(-1)), g, SamplingSpec{SamplingKind::Nodes});
+    Problem p = make_problem(Scene::rectangle(g.whole_lx(), g.whole_ly()).over(uniform(-5e-4)).loaded(uniform(-1)), g, SamplingSpec{SamplingKind::Nodes});
     std::cerr << "hard_cases: flat support, n = " << n << "\n";
     auto t0 = Clock::now();
     const ExactResult r = solve_sequenced(p, ExactOptions{});
@@ -207,7 +207,7 @@ void many_regions(std::ostream& md, const Context&) {
         "|---:|---:|---:|---:|:---:|---:|---:|---:|\n";
   for (double q : {100.0, 300.0, 1000.0}) {
     const Grid g = make_grid(64);
-    const Problem p = make_problem(field_scene(g.whole_lx(), g.whole_ly(), bumps(4, -1.0, -0.01), uniform(-q)), g, SamplingSpec{SamplingKind::Nodes});
+    const Problem p = make_problem(Scene::rectangle(g.whole_lx(), g.whole_ly()).over(bumps(4, -1.0, -0.01)).loaded(uniform(-q)), g, SamplingSpec{SamplingKind::Nodes});
     const ExactResult r = solve_exact(p, ExactOptions{});
     const SweepRow pen = sweep_row(p, Scheme::Nonlinear, 1e-10, 1e-8, 100, r.w);
     const VectorXd xi = contact_force_density(p, pen.w, 1e-10);
@@ -265,7 +265,7 @@ void million_unknowns(std::ostream& md, const Context& c) {
   }
   md << "\nTable: " << words("hard_cases.million_caption", {{"n", std::to_string(c.fine)}}) << "\n";
   md << "\n" << words("hard_cases.million_after") << "\n";
-  const Problem free = make_problem(field_scene(quarter.whole_lx(), quarter.whole_ly(), uniform(-1), uniform(1)), quarter, SamplingSpec{SamplingKind::Nodes});
+  const Problem free = make_problem(Scene::rectangle(quarter.whole_lx(), quarter.whole_ly()).over(uniform(-1)).loaded(uniform(1)), quarter, SamplingSpec{SamplingKind::Nodes});
   const double eps = 1e-3;
   const std::vector<double> steps = linear_step_norms(free, eps, 30);
   const double factor = asymptotic_factor(steps), measured = (1 / factor - 1) / eps;

@@ -201,8 +201,8 @@ int main(int argc, char** argv) {
   return run_guarded("kink_study", [&] {
     const std::vector<SceneCase> cases = {
         {"The paper's scene", "paper", paper_scene(), 16},
-        {"The cylinder at (0.45, 0.5)", "off-centre", cylinder_scene(1, 1, Cylinder{0.45, 0.5, 0.25, 0.0625}), 16},
-        {"A 1.25 x 1 plate with the cylinder at (0.6, 0.45)", "oblong", cylinder_scene(1.25, 1, Cylinder{0.6, 0.45, 0.25, 0.0625}), 20}};
+        {"The cylinder at (0.45, 0.5)", "off-centre", Scene::rectangle(1, 1).over(Cylinder{0.45, 0.5, 0.25, 0.0625}), 16},
+        {"A 1.25 x 1 plate with the cylinder at (0.6, 0.45)", "oblong", Scene::rectangle(1.25, 1).over(Cylinder{0.6, 0.45, 0.25, 0.0625}), 20}};
     std::vector<Row> rows;
     for (const SceneCase& c : cases) {
       const RimAnswer series = rim_answer(c.scene);

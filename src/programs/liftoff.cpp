@@ -71,7 +71,7 @@ struct Run {
 // mesh (contact_hct.edp -symmetry quarter), a quarter of the unknowns: one mesh finer in the same time.
 bool mirror_symmetric(const Case& s) { return s.cx == s.lx / 2 && s.cy == s.ly / 2; }
 
-Scene scene_of(const Case& s) { return cylinder_scene(s.lx, s.ly, Cylinder{s.cx, s.cy, kRadius, kR}); }
+Scene scene_of(const Case& s) { return Scene::rectangle(s.lx, s.ly).over(Cylinder{s.cx, s.cy, kRadius, kR}); }
 
 Run solve(const Case& s, const Rows& r, int n) {
   const Scene scene = scene_of(s);

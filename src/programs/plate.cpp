@@ -269,15 +269,16 @@ void refuse_group(const CLI::Option_group* group, const std::string& why) {
 // its rim the edge unless --edge says otherwise) or an expression obstacle, and the load.
 plate::Scene scene_of(const Options& o) {
   using namespace plate;
+  const Scene plate = Scene::rectangle(o.lx, o.ly);
   Scene s;
   if (o.obstacle == "cylinder") {
     const auto [cx, cy] = parse_pair("--centre", o.centre);
-    s = cylinder_scene(o.lx, o.ly, Cylinder{cx, cy, o.radius, o.R});
+    s = plate.over(Cylinder{cx, cy, o.radius, o.R});
   } else {
-    s = expression_scene(o.lx, o.ly, o.obstacle, "0");
+    s = plate.over(o.obstacle);
   }
   if (o.edge != "auto") s.edge = parse_edge(o.edge);
-  return with_load(s, o.load);
+  return s.loaded(o.load);
 }
 
 // What to solve and how, once every option has been checked.

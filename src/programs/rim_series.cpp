@@ -74,7 +74,7 @@ std::string uniform_load_csv(int finest) {
     << "0," << rim_digits(exact) << ",,,\n";
   const Field none = [](double, double) { return -1.0; }, one = [](double, double) { return 1.0; };
   for (int n = 16; n <= finest; n *= 2) {
-    const Problem p = make_problem(expression_scene(1, 1, "-1", "1"), make_grid(n), SamplingSpec{SamplingKind::Nodes});
+    const Problem p = make_problem(Scene::rectangle(1, 1).over("-1").loaded("1"), make_grid(n), SamplingSpec{SamplingKind::Nodes});
     Cholesky chol;
     chol.factorize(p.K);
     VectorXd solved = chol.solve(p.F), none;

@@ -60,8 +60,7 @@ double published(const std::map<std::string, double>& numbers, const std::string
 Scene paper_scene() { return paper_scene(paper::kObstacleHeight); }
 
 Scene paper_scene(double R) {
-  return cylinder_scene(paper::kSide, paper::kSide, Cylinder{paper::kObstacleCx, paper::kObstacleCy, paper::kObstacleRadius, R},
-                        paper::kLoad);
+  return Scene::rectangle(paper::kSide, paper::kSide).over(Cylinder{paper::kObstacleCx, paper::kObstacleCy, paper::kObstacleRadius, R}).loaded(paper::kLoad);
 }
 
 int paper_cells() { return static_cast<int>(std::lround(paper::kSide / paper::kH)); }

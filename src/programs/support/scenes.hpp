@@ -34,11 +34,11 @@ struct JustTouching {
 };
 inline JustTouching just_touching(int n) {
   const Grid g = make_grid(n);
-  JustTouching s{make_problem(field_scene(1, 1, uniform(-1.0), uniform(1.0)), g, SamplingSpec{SamplingKind::Nodes}), {}, {}};
+  JustTouching s{make_problem(Scene::rectangle(1, 1).over(uniform(-1.0)).loaded(uniform(1.0)), g, SamplingSpec{SamplingKind::Nodes}), {}, {}};
   Cholesky chol;
   chol.factorize(s.free_plate.K);
   s.w_free = chol.solve(s.free_plate.F);
-  s.touching = make_problem(field_scene(1, 1, centre_spike(g, s.w_free[centre_value_dof(g)]), uniform(1.0)), g,
+  s.touching = make_problem(Scene::rectangle(1, 1).over(centre_spike(g, s.w_free[centre_value_dof(g)])).loaded(uniform(1.0)), g,
                             SamplingSpec{SamplingKind::Nodes});
   return s;
 }
@@ -89,7 +89,7 @@ inline int contact_regions(const Grid& g, const std::vector<char>& touching) {
 inline Problem cycling_problem() {
   const double M[3][3] = {{1.56, 1.14, -0.47}, {1.14, 3.51, -2.38}, {-0.47, -2.38, 1.71}};
   const double q[3] = {-0.09, -0.80, 0.58};
-  Problem p = make_problem(field_scene(1, 1, uniform(-1.0), uniform(0.0)), make_grid(4), SamplingSpec{SamplingKind::Nodes});
+  Problem p = make_problem(Scene::rectangle(1, 1).over(uniform(-1.0)).loaded(uniform(0.0)), make_grid(4), SamplingSpec{SamplingKind::Nodes});
   const int n = p.grid.unknowns();
   std::vector<Eigen::Triplet<double>> t;
   for (int i = 0; i < n; ++i)
