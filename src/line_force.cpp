@@ -196,4 +196,20 @@ double line_force_at(const LineForce& f, double theta) {
   return best < 0 ? NAN : f.q[best];
 }
 
+LineFigures line_figures(const Problem& p, const LineForce& f) {
+  LineFigures g;
+  if (f.theta.empty()) return g;
+  g.q0 = line_force_value(f, 0), g.q45 = line_force_value(f, M_PI / 4);
+  g.fit0 = line_force_fit(f, 0), g.fit45 = line_force_fit(f, M_PI / 4);
+  if (f.spline_degree == 0) return g;
+  const double r = f.length / (2 * M_PI);
+  const double cx = p.sampling.edge.x[0] - r * std::cos(f.theta[0]), cy = p.sampling.edge.y[0] - r * std::sin(f.theta[0]);
+  for (int k = 0; k < kLineLoadAngles; ++k) {
+    const double t = 2 * M_PI * k / kLineLoadAngles;
+    g.theta.push_back(t), g.x.push_back(cx + r * std::cos(t)), g.y.push_back(cy + r * std::sin(t));
+    g.q.push_back(line_force_value(f, t));
+  }
+  return g;
+}
+
 }  // namespace plate

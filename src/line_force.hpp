@@ -68,4 +68,16 @@ double max_distance(const LineForce& f, const std::function<double(double)>& ref
 // The fitted (smoothed) line load sum_k a_k cos(4 k theta); NaN without a fit.
 double line_force_fit(const LineForce& f, double theta);
 
+// What a report states of a line load on a circle besides its rows, evaluated once so that a report
+// only formats: q and its fit at theta = 0 and pi/4, and, for a function of the angle (spline rows,
+// the rim-contact series), its values at kLineLoadAngles equal angles from 0 and the points of the
+// circle where they act (the circle through p's edge points, of radius f.length / 2 pi). The table
+// is empty for point rows, whose rows are listed themselves.
+struct LineFigures {
+  double q0 = NAN, q45 = NAN;      // line_force_value at 0 and pi/4
+  double fit0 = NAN, fit45 = NAN;  // line_force_fit at 0 and pi/4
+  std::vector<double> theta, x, y, q;
+};
+LineFigures line_figures(const Problem& p, const LineForce& f);
+
 }  // namespace plate

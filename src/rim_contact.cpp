@@ -694,4 +694,52 @@ RimAnswer rim_answer(const Scene& s, int levels, bool extended, int first) {
   return a;
 }
 
+double rim_max_abs_m12(const RimSeries& s, double nu, int k) {
+  double best = -1, bx = 0, by = 0;
+  auto look = [&](double x, double y) {
+    x = std::clamp(x, 0.0, s.scene.lx), y = std::clamp(y, 0.0, s.scene.ly);
+    if (const double m = std::abs(s.moments(x, y, nu).m12); m > best) best = m, bx = x, by = y;
+  };
+  // |m12| is unchanged by a mirror of the scene (m12 changes sign), so a symmetric scene's lower
+  // left quarter holds its largest value.
+  const int last = s.symmetry == RimSymmetry::None ? k : k / 2;
+  for (int i = 0; i <= last; ++i)
+    for (int j = 0; j <= last; ++j) look(s.scene.lx * i / k, s.scene.ly * j / k);
+  // Then about the best lattice point, on lattices five times finer each round (m12 is continuous,
+  // its gradient may jump across the rim: the search closes in on the point, not on a zero slope).
+  // Each axis steps by its own lattice spacing, so a round always reaches the neighbouring rows.
+  for (double sx = s.scene.lx / k / 5, sy = s.scene.ly / k / 5; sx > 1e-9 * s.scene.lx; sx /= 5, sy /= 5) {
+    const double x0 = bx, y0 = by;
+    for (int i = -6; i <= 6; ++i)
+      for (int j = -6; j <= 6; ++j) look(x0 + i * sx, y0 + j * sy);
+  }
+  return best;
+}
+
+LineForce rim_line_force(const RimSeries& s) {
+  LineForce f;
+  f.length = 2 * M_PI * s.scene.radius;
+  f.total = s.total_force();
+  f.mean = s.q_cos.empty() ? NAN : s.q_cos[0];
+  f.min = INFINITY, f.max = -INFINITY;
+  for (int k = 0; k < kLineLoadAngles; ++k) {
+    const double t = 2 * M_PI * k / kLineLoadAngles, q = s.q(t);
+    f.theta.push_back(t), f.q.push_back(q);
+    if (q < f.min) f.min = q, f.theta_min = t;
+    if (q > f.max) f.max = q, f.theta_max = t;
+  }
+  return f;
+}
+
+LineFigures rim_line_figures(const RimSeries& s) {
+  LineFigures g;
+  g.q0 = s.q(0), g.q45 = s.q(M_PI / 4);
+  for (int k = 0; k < kLineLoadAngles; ++k) {
+    const double t = 2 * M_PI * k / kLineLoadAngles;
+    g.theta.push_back(t), g.x.push_back(s.scene.cx + s.scene.radius * std::cos(t)), g.y.push_back(s.scene.cy + s.scene.radius * std::sin(t));
+    g.q.push_back(s.q(t));
+  }
+  return g;
+}
+
 }  // namespace plate

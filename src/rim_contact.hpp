@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "contact.hpp"
+#include "line_force.hpp"
 #include "scene.hpp"
 
 namespace plate {
@@ -121,7 +122,7 @@ struct RimPremise {
   double min_w_minus_R = 0, x_min = 0, y_min = 0;  // over the disk, excluding the rim itself
   std::string why;
 };
-RimPremise check_premise(const RimSeries& s, int angles = 720, double tolerance = 1e-9);
+RimPremise check_premise(const RimSeries& s, int angles = kLineLoadAngles, double tolerance = 1e-9);
 
 // The truncation of level l = 0, 1, ...: harmonics 8 + 4l, degree 16 + 8l, corner terms 1 + l / 2.
 RimSeriesOptions rim_level(int level, bool extended = false);
@@ -144,5 +145,16 @@ struct RimAnswer {
 };
 // `first`: the coarsest level solved (at least three levels are kept, for a bar that shrank).
 RimAnswer rim_answer(const Scene& s, int levels = 6, bool extended = false, int first = 0);
+
+// The series' line load as a report of the grid schemes states one (line_force.hpp): its values at
+// kLineLoadAngles equal angles from 0, the rim's length, the total (D18), the mean q_cos[0], and the
+// extremes over those angles.
+LineForce rim_line_force(const RimSeries& s);
+// q at 0 and pi/4 and the same table with its points on the rim (no fit: the series is the function).
+LineFigures rim_line_figures(const RimSeries& s);
+
+// max |m12| over the plate (Fig. 2's quantity, off the grid): on a lattice of (k + 1)^2 points, then
+// on finer lattices about the best one.
+double rim_max_abs_m12(const RimSeries& s, double nu, int k = 100);
 
 }  // namespace plate

@@ -246,7 +246,8 @@ void add_options(CLI::App& app, Options& o) {
   out->add_option("--point", o.points, "report w at 'x,y' (repeatable)");
   o.json_opt = out->add_option("--json", o.json_path, "write the summary (JSON) here");
   o.line_csv_opt = out->add_option("--line-csv", o.line_csv_path,
-                                   "write the line load q(theta) at the edge points (CSV) here; semi-analytic: at 720 fixed angles");
+                                   "write the line load q(theta) at the edge points (CSV) here; semi-analytic: at " +
+                                       std::to_string(plate::kLineLoadAngles) + " fixed angles");
   out->add_flag("-q,--quiet", o.quiet, "print nothing but errors");
 }
 
@@ -281,15 +282,20 @@ plate::Scene scene_of(const Options& o) {
   return s.loaded(o.load);
 }
 
+// The three models plate offers: the finite elements with the constraint held exactly, with a
+// penalty, and the rim-contact series.
+enum class Model { Exact, Penalty, Series };
+
 // What to solve and how, once every option has been checked.
 struct Run {
+  Model model = Model::Exact;
   plate::Scene scene;
-  plate::Grid g;
+  plate::Grid g;  // the whole plate's (not for the series)
   plate::SamplingSpec spec;
-  bool exact = false;
   plate::SolveOptions opt;
   plate::ExactOptions exact_opt;
   plate::Mirrors mirrors;  // the exact scheme's, found once (none with --symmetry none)
+  int solved_unknowns = 0;  // of the part the mirrors leave, or of the whole grid
   std::optional<plate::Problem> penalised;  // the penalty schemes' problem, assembled before the echo
   bool estimate = true;
   plate::Report report;
@@ -349,10 +355,28 @@ int write_outputs(const Options& o, const Outputs& out, const plate::Report& rep
   return plate::kSuccess;
 }
 
-// Throws std::invalid_argument naming the option at fault; nothing has been written yet.
+// The options the series models; it refuses the others by name rather than ignoring them.
+const std::vector<std::string> kSeriesOptions = {"--lx",  "--ly",  "--obstacle", "--obstacle-height", "--radius",   "--centre", "--load",
+                                                 "--scheme", "--nu", "--point",   "--json",            "--line-csv", "--quiet"};
+
+// Throws std::invalid_argument naming the option at fault; nothing has been written yet. The scene
+// is built here, once, for every model.
 Run check(const Options& o) {
   using namespace plate;
   Run r;
+  r.model = o.scheme == "semi-analytic" ? Model::Series : o.scheme == "exact" ? Model::Exact : Model::Penalty;
+  if (r.model == Model::Series) {
+    for (const CLI::Option_group* g : {o.grid, o.exact, o.penalty})
+      refuse_group(g, "--scheme semi-analytic (no grid, no eps; its bars are the series' own)");
+    if (o.obstacle != "cylinder")
+      throw std::invalid_argument("--obstacle: --scheme semi-analytic models the cylinder only, not '" + o.obstacle + "'");
+    r.scene = scene_of(o);
+    rim_scene(r.scene);  // the series models a cylinder under a uniform load; it refuses anything else by name
+    check_outputs({{o.json_opt, o.json_path}, {o.line_csv_opt, o.line_csv_path}});
+    r.report.nu = o.nu;
+    r.report.points = points_of(o, o.lx, o.ly);
+    return r;
+  }
   r.g = make_grid(o.n, o.lx, o.ly);
   check_grid_size(r.g);
   check_outputs({{o.json_opt, o.json_path}, {o.csv_opt, o.csv_path}, {o.line_csv_opt, o.line_csv_path}});
@@ -362,14 +386,14 @@ Run check(const Options& o) {
     throw std::invalid_argument("--edge-rows spline needs edge sampling of a circle (--sampling edge, the cylinder or --edge circle:...)");
   if (!o.line_csv_path.empty() && !has_edge(r.spec.kind))
     throw std::invalid_argument("--line-csv needs edge sampling (--sampling edge or edge-gauss)");
-  r.exact = o.scheme == "exact";
+  const bool exact = r.model == Model::Exact;
   r.opt = o.opt;
   r.opt.scheme = o.scheme == "linear" ? Scheme::Linear : Scheme::Nonlinear;
-  if (r.exact)
+  if (exact)
     refuse_group(o.penalty, "--scheme exact (no eps: the constraint is held exactly)");
   else
     refuse_group(o.exact, "the penalty schemes (it applies to --scheme exact only)");
-  if (r.exact && o.enrich != "none") {
+  if (exact && o.enrich != "none") {
     const bool circle = r.spec.kind == SamplingKind::Edge && r.scene.edge.kind == EdgeCurve::Kind::Circle;
     if (o.enrich == "ring" && !circle)
       throw std::invalid_argument("--enrich ring needs edge sampling of a circle (--sampling edge, the cylinder or --edge circle:...)");
@@ -379,12 +403,13 @@ Run check(const Options& o) {
   }
   // The memory the model solved needs: the part the mirrors leave, for the exact scheme. A grid whose
   // smallest part would not fit is refused first, before the mirrors are looked for on all its nodes.
-  const bool use_mirrors = r.exact && o.symmetry == "auto";
-  if (use_mirrors) {
+  if (exact && o.symmetry == "auto") {
     check_memory(part_of(r.g, plate::Mirrors{r.g.nx % 2 == 0, r.g.ny % 2 == 0}));
     r.mirrors = find_mirrors(r.scene, r.g, r.spec);
   }
-  check_memory(part_of(r.g, r.mirrors));
+  const Grid solved = part_of(r.g, r.mirrors);
+  check_memory(solved);
+  r.solved_unknowns = solved.unknowns();
   r.report.model = describe(r.mirrors);
   r.report.nu = o.nu;
   r.estimate = o.estimate == "auto";
@@ -392,7 +417,7 @@ Run check(const Options& o) {
   r.exact_opt.max_iter = o.max_iter_opt->count() ? o.opt.max_iter : r.exact_opt.max_iter;
   r.exact_opt.globalise = !o.no_globalise;
   r.exact_opt.nested = !o.no_nested;
-  if (r.exact) validate(r.exact_opt);
+  if (exact) validate(r.exact_opt);
   if (*o.eps_opt) {
     r.opt.eps_start = o.eps_fixed;
     r.opt.continuation = false;
@@ -464,7 +489,8 @@ void set_error_bars(Run& r, const std::vector<plate::ExactLevel>& levels) {
 }
 
 // The exact solver's answer in the penalty schemes' form, for one report: on the part of the plate
-// the scene's mirror lines leave (unless --symmetry none), unfolded onto the whole plate.
+// the scene's mirror lines leave (unless --symmetry none), unfolded onto the whole plate. Every grid
+// of the sequence is measured as it is done (the finest too: those are the answer's measures).
 plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::VectorXd& xi, plate::Progress& progress) {
   using namespace plate;
   if (!progress.quiet()) r.exact_opt.on_iterate = [&](int cells, int iteration, int held, int changed) {
@@ -475,7 +501,7 @@ plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::Vec
       progress.stage(grid + "active-set iteration " + std::to_string(iteration) + ", " + std::to_string(held) +
                      " rows held, " + std::to_string(changed) + " to change");
   };
-  if (r.estimate) r.exact_opt.measure_levels = ExactOptions::LevelMeasures{r.report.nu, r.report.points};
+  r.exact_opt.measure_levels = ExactOptions::LevelMeasures{r.report.nu, r.report.points};
   scene = solve_exact_scene(r.scene, r.g.nx, r.spec, r.exact_opt, r.mirrors);
   set_error_bars(r, scene.result.levels);
   const ExactResult& exact = scene.result;
@@ -485,6 +511,8 @@ plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::Vec
   result.message = exact.message;
   for (const auto& l : exact.levels) result.seconds_iterate += l.seconds;
   xi = exact.lambda;
+  r.report.measures = *exact.levels.back().measures;
+  r.report.total_force = exact.levels.back().force;
   r.report.certificate = &exact.certificate;
   r.report.certificate_tol = r.exact_opt.tol;
   r.report.model_unknowns = scene.solved.unknowns();
@@ -517,21 +545,25 @@ plate::SolveResult solve_penalty(Run& r, const plate::Problem& problem, plate::V
                      fmt(", more than tol = %.3g (the penalty's own error at eps = ", r.opt.tol) +
                      fmt("%g); use a smaller --eps-min or --scheme exact", result.eps / L4);
   }
+  r.report.measures = measure_field(problem, result.w, r.report.nu, r.report.points);
+  r.report.total_force = total_contact_force(problem, xi);
+  r.report.penalty_residual = penalty_residual(problem, result.w, result.eps);
   return result;
 }
 
 // Scale-free penalty: eps in units of L^4 (the stiffness K ~ L^-2 against eps^-1 M ~ L^2 / eps),
 // OS relative to the size of the answer, which needs the assembled problem. Done before the echo, so
-// that it states the values solved with; the exact scheme needs no scaling. On the unit square eps
+// that it states the values solved with; the other models need no scaling. On the unit square eps
 // is unchanged.
 Config scale(Run& r, plate::Progress& progress, plate::Clock::time_point t0) {
   using namespace plate;
+  if (r.model == Model::Series) return {};
   const double L4 = std::pow(r.g.lx(), 4);
   r.opt.eps_start *= L4;
   r.opt.eps_min *= L4;
   r.opt.eps_unit = L4;
   r.report.eps_unit = L4;
-  if (r.exact) return {};
+  if (r.model == Model::Exact) return {};
   progress.stage("assembling " + std::to_string(r.g.unknowns()) + " unknowns");
   r.penalised = make_problem(r.scene, r.g, r.spec);
   r.report.seconds_assemble = seconds_since(t0);
@@ -539,84 +571,98 @@ Config scale(Run& r, plate::Progress& progress, plate::Clock::time_point t0) {
   return {{"tol (absolute: --tol times the answer's size)", fmt("%.6g", r.opt.tol)}, {"eps unit (lx^4)", fmt("%.6g", L4)}};
 }
 
-// Assemble, solve, write every output, print the summary; the exit status.
-int solve_and_write(const Options& o, Run& r, plate::Progress& progress, plate::Clock::time_point t0) {
+// The echo: every option a model uses, with the values it solves with, under a header that says
+// what is solved.
+Config echo_run(const CLI::App& app, const Options& o, const Run& r, const Config& scaled) {
+  if (r.model == Model::Series)
+    return echo(app, o, "plate: the rim-contact series (no grid)", [&](const CLI::Option* opt) {
+      return std::find(kSeriesOptions.begin(), kSeriesOptions.end(), opt->get_name()) != kSeriesOptions.end();
+    });
+  std::ostringstream header;
+  header << "plate: " << r.g.nx << " x " << r.g.ny << " cells, h = " << r.g.h << ", " << r.g.unknowns() << " unknowns";
+  if (r.solved_unknowns != r.g.unknowns()) header << ", " << r.solved_unknowns << " of them on the " << r.report.model << " solved";
+  const bool exact = r.model == Model::Exact;
+  return echo(app, o, header.str(), [](const CLI::Option* opt) { return opt->get_name() != "--help"; },
+              [&](const CLI::Option* opt) -> std::optional<std::string> {
+                if (exact && opt == o.tol_opt) return plate::fmt("%g", r.exact_opt.tol);
+                if (exact && opt == o.max_iter_opt) return std::to_string(r.exact_opt.max_iter);
+                return std::nullopt;
+              },
+              scaled);
+}
+
+// The CSV says what its bounds are about, as the summary does: the certificate the discrete
+// answer, the error bars the plate's.
+std::string bounds_header(const plate::Report& report) {
   using namespace plate;
-  SceneSolution scene;
+  std::string bounds;
+  if (report.certificate) bounds = "# certificate (discrete): worst relative entry " + fmt("%.2g", report.certificate->worst()) + "\n";
+  std::istringstream bar_lines(error_bars_text(report));
+  for (std::string line; std::getline(bar_lines, line);) bounds += "# " + line + "\n";
+  return bounds;
+}
+
+// A grid model: solve, then compute once everything the outputs state of the answer, then format.
+Outputs solve_grid(const Options& o, Run& r, plate::SceneSolution& scene, plate::SolveResult& result, plate::NodalFields& nodes,
+                   plate::Progress& progress, plate::Clock::time_point t0) {
+  using namespace plate;
   VectorXd xi;
-  SolveResult result;
-  if (r.exact) {
+  const bool exact = r.model == Model::Exact;
+  if (exact) {
     progress.stage("solving (exact scheme, " + o.sampling + " sampling)");
     result = solve_exactly(r, scene, xi, progress);
   } else {
     progress.stage("assembled; solving (" + o.scheme + " scheme, " + o.sampling + " sampling)");
     result = solve_penalty(r, *r.penalised, xi, progress);
   }
-  const Problem& problem = r.exact ? scene.whole() : *r.penalised;
+  const Problem& problem = exact ? scene.whole() : *r.penalised;
   progress.stage(result.converged ? "solved; writing the outputs" : "not converged; writing the outputs");
-  // What the outputs state of the answer is computed here, once; below it is formatted, then written.
-  const NodalFields nodes = nodal_fields(problem, result.w, xi, r.report.nu);
+  nodes = nodal_fields(problem, result.w, xi, r.report.nu);
   r.report.nodal = nodal_extremes(nodes);
-  r.report.total_force = total_contact_force(problem, xi);
   r.report.violation = constraint_violation(problem, result.w);
   r.report.dip_below_edge = dip_below_edge(problem, result.w);
   r.report.xi = xi;
   r.report.line = line_force(problem, xi);
-  r.report.measures = measure_field(problem, result.w, r.report.nu, r.report.points);
-  if (o.rate) r.report.lambda1h = smallest_eigenpair(problem.K, problem.M).lambda;
+  r.report.line_figures = line_figures(problem, r.report.line);
+  if (o.rate) {
+    r.report.lambda1h = smallest_eigenpair(problem.K, problem.M).lambda;
+    r.report.sharp_factor = sharp_contraction(r.report.lambda1h, result.eps);
+    r.report.paper_rho = paper_rho(1.0 / r.report.lambda1h, result.eps);
+  }
   r.report.problem = &problem;
   r.report.result = &result;
   r.report.nodes = &nodes;
   r.report.seconds_total = seconds_since(t0);
-
-  // The CSV says what its bounds are about, as the summary does: the certificate the discrete
-  // answer, the error bars the plate's.
-  std::string bounds;
-  if (r.report.certificate)
-    bounds = "# certificate (discrete): worst relative entry " + fmt("%.2g", r.report.certificate->worst()) + "\n";
-  std::istringstream bar_lines(error_bars_text(r.report));
-  for (std::string line; std::getline(bar_lines, line);) bounds += "# " + line + "\n";
   r.report.converged = result.converged, r.report.message = result.message;
-  return write_outputs(o,
-                       {o.csv_path.empty() ? "" : bounds + nodal_csv(nodes), o.json_path.empty() ? "" : summary_json(r.report),
-                        o.line_csv_path.empty() ? "" : line_force_csv(problem, r.report.line), o.quiet ? "" : summary_text(r.report)},
-                       r.report);
+  return {o.csv_path.empty() ? "" : bounds_header(r.report) + nodal_csv(nodes), o.json_path.empty() ? "" : summary_json(r.report),
+          o.line_csv_path.empty() ? "" : line_force_csv(problem, r.report.line, r.report.line_figures),
+          o.quiet ? "" : summary_text(r.report)};
 }
 
-// --scheme semi-analytic: the cylinder's scene by the rim-contact series (rim_contact.hpp), no grid.
-// Options that belong to a grid or a penalty are refused by name rather than ignored.
-int solve_semi_analytic(const CLI::App& app, const Options& o, plate::Clock::time_point t0) {
+// --scheme semi-analytic: the cylinder's scene by the rim-contact series (rim_contact.hpp), no grid;
+// its values are read off the finest truncation once, then formatted.
+Outputs solve_series(const Options& o, Run& r, std::optional<plate::RimAnswer>& answer, plate::Clock::time_point t0) {
   using namespace plate;
-  for (const CLI::Option_group* g : {o.grid, o.exact, o.penalty})
-    refuse_group(g, "--scheme semi-analytic (no grid, no eps; its bars are the series' own)");
-  if (o.obstacle != "cylinder")
-    throw std::invalid_argument("--obstacle: --scheme semi-analytic models the cylinder only, not '" + o.obstacle + "'");
-  const Scene scene = scene_of(o);
-  rim_scene(scene);  // the series models a cylinder under a uniform load; it refuses anything else by name
-  check_outputs({{o.json_opt, o.json_path}, {o.line_csv_opt, o.line_csv_path}});
-  Report report;
-  report.points = points_of(o, o.lx, o.ly);
-  const std::vector<std::string> modelled = {"--lx", "--ly", "--obstacle", "--obstacle-height", "--radius", "--centre",
-                                            "--load", "--scheme", "--nu", "--point", "--json", "--line-csv", "--quiet"};
-  report.config = echo(app, o, "plate: the rim-contact series (no grid)", [&](const CLI::Option* opt) {
-    return std::find(modelled.begin(), modelled.end(), opt->get_name()) != modelled.end();
-  });
   // The last three truncations: enough for a bar that has been seen to shrink (rim_series shows all six).
-  const RimAnswer answer = rim_answer(scene, 6, false, 3);
-  report.series = &answer;
-  report.nu = o.nu;
-  report.measures.max_abs_m12.value = rim_max_abs_m12(answer.finest, report.nu);
-  report.converged = answer.premise.holds && answer.settled;
-  if (!answer.premise.holds)
-    report.message = "the contact is not the whole rim (" + answer.premise.why +
+  answer = rim_answer(r.scene, 6, false, 3);
+  const RimSeries& s = answer->finest;
+  Report& report = r.report;
+  report.series = &*answer;
+  const RimConvergenceRow& last = answer->rows.back();  // its peak, found once by rim_answer's search
+  report.measures.max_w = {last.max_w, last.x_max, last.y_max};
+  for (const auto& [x, y] : report.points) report.measures.w_at.push_back(s.w(x, y));
+  report.measures.max_abs_m12.value = rim_max_abs_m12(s, report.nu);
+  report.line = rim_line_force(s);
+  report.line_figures = rim_line_figures(s);
+  report.converged = answer->premise.holds && answer->settled;
+  if (!answer->premise.holds)
+    report.message = "the contact is not the whole rim (" + answer->premise.why +
                      "), so the rim-contact series does not solve this scene: use --scheme exact";
-  else if (!answer.settled)
+  else if (!answer->settled)
     report.message = "the series has not settled: its last change is not below the one before";
   report.seconds_total = seconds_since(t0);
-  return write_outputs(o,
-                       {"", o.json_path.empty() ? "" : rim_summary_json(report),
-                        o.line_csv_path.empty() ? "" : rim_line_csv(answer.finest), o.quiet ? "" : rim_summary_text(report)},
-                       report);
+  return {"", o.json_path.empty() ? "" : rim_summary_json(report), o.line_csv_path.empty() ? "" : rim_line_csv(report),
+          o.quiet ? "" : rim_summary_text(report)};
 }
 
 }  // namespace
@@ -643,20 +689,18 @@ int main(int argc, char** argv) {
   // CLI11 has its own exit codes; every bad input exits with the one documented in --help.
   if (const int status = parse_options(app, argc, argv, "plate"); status >= 0) return status;
   const auto t0 = Clock::now();
+  // One pipeline for every model: check the options and build the scene, scale, echo, solve and
+  // measure, format, write.
   return run_guarded("plate", [&] {
-    if (o.scheme == "semi-analytic") return solve_semi_analytic(app, o, t0);
     Run r = check(o);
     Progress progress("plate", o.quiet);
-    const Config scaled = scale(r, progress, t0);
-    std::ostringstream header;
-    header << "plate: " << r.g.nx << " x " << r.g.ny << " cells, h = " << r.g.h << ", " << r.g.unknowns() << " unknowns";
-    r.report.config = echo(app, o, header.str(), [](const CLI::Option* opt) { return opt->get_name() != "--help"; },
-                           [&](const CLI::Option* opt) -> std::optional<std::string> {
-                             if (r.exact && opt == o.tol_opt) return plate::fmt("%g", r.exact_opt.tol);
-                             if (r.exact && opt == o.max_iter_opt) return std::to_string(r.exact_opt.max_iter);
-                             return std::nullopt;
-                           },
-                           scaled);
-    return solve_and_write(o, r, progress, t0);
+    r.report.config = echo_run(app, o, r, scale(r, progress, t0));
+    // What the report points into lives here, until the outputs are written.
+    SceneSolution scene;
+    SolveResult result;
+    NodalFields nodes;
+    std::optional<RimAnswer> answer;
+    const Outputs out = r.model == Model::Series ? solve_series(o, r, answer, t0) : solve_grid(o, r, scene, result, nodes, progress, t0);
+    return write_outputs(o, out, r.report);
   });
 }

@@ -8,7 +8,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "contraction.hpp"
 #include "format.hpp"
 
 namespace plate {
@@ -37,21 +36,15 @@ std::string nodal_csv(const NodalFields& f) {
   return o.str();
 }
 
-std::string line_force_csv(const Problem& p, const LineForce& f) {
+std::string line_force_csv(const Problem& p, const LineForce& f, const LineFigures& g) {
   std::ostringstream o;
   if (f.spline_degree > 0) {  // a function of the angle (D12): its values at fixed angles, comparable across grids
-    const int angles = kLineLoadAngles;
-    const double r = f.length / (2 * M_PI);
-    const double cx = p.sampling.edge.x[0] - r * std::cos(f.theta[0]), cy = p.sampling.edge.y[0] - r * std::sin(f.theta[0]);
     o << "# plate: the contact force per unit length q on the rim, the spline of the edge rows' multipliers (degree "
-      << f.spline_degree << ", " << f.coefficients.size() << " knots), at " << angles
+      << f.spline_degree << ", " << f.coefficients.size() << " knots), at " << g.theta.size()
       << " equally spaced angles theta about the circle's centre\n"
          "theta,x,y,q\n";
-    for (int k = 0; k < angles; ++k) {
-      const double t = 2 * M_PI * k / angles;
-      o << csv_num(t) << ',' << csv_num(cx + r * std::cos(t)) << ',' << csv_num(cy + r * std::sin(t)) << ','
-        << csv_num(line_force_value(f, t)) << '\n';
-    }
+    for (size_t k = 0; k < g.theta.size(); ++k)
+      o << csv_num(g.theta[k]) << ',' << csv_num(g.x[k]) << ',' << csv_num(g.y[k]) << ',' << csv_num(g.q[k]) << '\n';
     return o.str();
   }
   o << "# plate: the contact force per unit length q at the points on the obstacle's edge (theta: angle about\n"
@@ -80,17 +73,17 @@ Json numbers(const std::vector<double>& v) {
   return a;
 }
 
-Json line_force_json(const LineForce& f) {
+Json line_force_json(const LineForce& f, const LineFigures& g) {
   if (f.empty()) return nullptr;
   Json j = {{"rows", f.q.size()}, {"rows_are", f.spline_degree > 0 ? "spline knots" : "points"},
             {"length", number(f.length)}, {"total", number(f.total)},
             {"mean", number(f.mean)}, {"min", number(f.min)}, {"max", number(f.max)},
             {"theta_min", number(f.theta_min)}, {"theta_max", number(f.theta_max)}};
   if (!f.theta.empty()) {
-    j["q_fit_theta_0"] = number(line_force_fit(f, 0));
-    j["q_fit_theta_pi_4"] = number(line_force_fit(f, M_PI / 4));
-    j["q_theta_0"] = number(line_force_value(f, 0));  // the spline's value, or the nearest point's
-    j["q_theta_pi_4"] = number(line_force_value(f, M_PI / 4));
+    j["q_fit_theta_0"] = number(g.fit0);
+    j["q_fit_theta_pi_4"] = number(g.fit45);
+    j["q_theta_0"] = number(g.q0);  // the spline's value, or the nearest point's
+    j["q_theta_pi_4"] = number(g.q45);
   }
   j["fourier_cos_4k_theta"] = numbers(f.fourier);
   j["theta"] = numbers(f.theta);
@@ -119,7 +112,7 @@ void check_json(Json& j, const Report& r) {
     j["penalty_residual"] = nullptr;
     j["residual_ok"] = c.worst() <= r.certificate_tol;
   } else {
-    j["penalty_residual"] = number(penalty_residual(p, s.w, s.eps));
+    j["penalty_residual"] = number(r.penalty_residual);
     j["error_bound"] = {{"bound", number(s.bound.bound)}, {"roundoff", number(s.bound.roundoff)},
                         {"green_centre", number(s.bound.green)}};
     j["residual_ok"] = s.converged;
@@ -189,7 +182,7 @@ std::string summary_json(const Report& r) {
   j["max_abs_m12"] = number(r.measures.max_abs_m12.value);
   j["max_abs_m12_at"] = {number(r.measures.max_abs_m12.x), number(r.measures.max_abs_m12.y)};
   j["max_abs_m12_nodes"] = number(e.max_abs_m12);
-  j["line_force"] = line_force_json(r.line);
+  j["line_force"] = line_force_json(r.line, r.line_figures);
   j["constraint_violation"] = number(r.violation);
   j["dip_below_edge"] = number(r.dip_below_edge);
   check_json(j, r);
@@ -201,8 +194,8 @@ std::string summary_json(const Report& r) {
   j["contact_nodes"] = Json::array();
   for (int k : e.contact) j["contact_nodes"].push_back({number(f.x[k]), number(f.y[k])});
   if (r.lambda1h > 0)
-    j["contraction"] = {{"lambda1h", number(r.lambda1h)}, {"sharp_factor", number(sharp_contraction(r.lambda1h, s.eps))},
-                        {"paper_rho", number(paper_rho(1.0 / r.lambda1h, s.eps))}, {"at_eps", number(s.eps / r.eps_unit)}};
+    j["contraction"] = {{"lambda1h", number(r.lambda1h)}, {"sharp_factor", number(r.sharp_factor)},
+                        {"paper_rho", number(r.paper_rho)}, {"at_eps", number(s.eps / r.eps_unit)}};
   j["seconds"] = {{"assemble", number(r.seconds_assemble)}, {"factorize", number(s.seconds_factorize)},
                   {"iterate", number(s.seconds_iterate)}, {"bound", number(s.seconds_bound)},
                   {"total", number(r.seconds_total)}};
@@ -239,10 +232,10 @@ std::string summary_text(const Report& r) {
       << (std::isfinite(l.theta_min) ? " at theta = " + summary_value(l.theta_min) : std::string()) << ", max " << summary_value(l.max)
       << (std::isfinite(l.theta_max) ? " at theta = " + summary_value(l.theta_max) : std::string());
     if (!l.theta.empty() && l.spline_degree > 0)
-      o << "; q(0) = " << summary_value(line_force_value(l, 0)) << ", q(pi/4) = " << summary_value(line_force_value(l, M_PI / 4)) << " (the spline)";
+      o << "; q(0) = " << summary_value(r.line_figures.q0) << ", q(pi/4) = " << summary_value(r.line_figures.q45) << " (the spline)";
     else if (!l.theta.empty())
-      o << "; fitted q(0) = " << summary_value(line_force_fit(l, 0)) << ", q(pi/4) = " << summary_value(line_force_fit(l, M_PI / 4))
-        << " (points: " << summary_value(line_force_value(l, 0)) << ", " << summary_value(line_force_value(l, M_PI / 4)) << ")";
+      o << "; fitted q(0) = " << summary_value(r.line_figures.fit0) << ", q(pi/4) = " << summary_value(r.line_figures.fit45)
+        << " (points: " << summary_value(r.line_figures.q0) << ", " << summary_value(r.line_figures.q45) << ")";
     o << "\n";
     if (std::isfinite(r.dip_below_edge))
       o << "  between the rows the plate dips at most " << summary_value(r.dip_below_edge) << " below the edge (points h/32 apart)\n";
@@ -270,7 +263,7 @@ std::string summary_text(const Report& r) {
       << summary_value(s.bound.roundoff) << ")" << (s.converged ? ", within tol" : ", NOT certified") << "\n";
   if (r.lambda1h > 0)
     o << "lambda_1h = " << summary_value(r.lambda1h) << ", contraction per iteration at eps = " << summary_value(s.eps / r.eps_unit) << ": sharp "
-      << summary_value(sharp_contraction(r.lambda1h, s.eps)) << ", paper's rho " << summary_value(paper_rho(1.0 / r.lambda1h, s.eps))
+      << summary_value(r.sharp_factor) << ", paper's rho " << summary_value(r.paper_rho)
       << "\n";
   char b[128];
   std::snprintf(b, sizeof b, "time: assemble %.3g s, factorise %.3g s, iterate %.3g s, bound %.3g s, total %.3g s\n",

@@ -27,11 +27,14 @@ struct Report {
   const SolveResult* result = nullptr;
   const NodalFields* nodes = nullptr;
   VectorXd xi;                                    // contact force density at the sample points
-  LineForce line;                                 // the line load on the edge (edge sampling)
+  LineForce line;                                 // the line load on the edge (edge sampling; the series': on its rim)
+  LineFigures line_figures;                       // its values a report states (line_force.hpp)
   const Certificate* certificate = nullptr;       // the exact solver's; null for the penalty schemes
   double certificate_tol = 0;
   std::vector<std::pair<double, double>> points;  // where the user asked for w
   double lambda1h = -1;                           // < 0: not computed
+  double sharp_factor = NAN, paper_rho = NAN;     // with lambda1h: the contraction per iteration at the final eps
+  double penalty_residual = NAN;                  // the penalty schemes': the residual of (2a)
   double seconds_assemble = 0, seconds_total = 0;
   double eps_unit = 1;  // eps is printed divided by this, in the user's unit (plate: lx^4)
   std::string model = "whole plate";  // the part of the plate solved (mirror.hpp)
@@ -39,8 +42,9 @@ struct Report {
   std::string space = "Bogner-Fox-Schmit";  // the finite-element space (with the enrichment D31, if any)
   std::vector<double> refinement;     // the exact solve's refinement steps, each correction's relative size
   double dip_below_edge = NAN;        // max of phi - w along the edge curve (NaN: no edge)
-  // The extremes of the finite-element fields over the plate and w_h at `points` (extrema.hpp),
-  // measured by the program before it reports; the nodal ones are read off `nodes`.
+  // The extremes of the finite-element fields over the plate and w_h at `points` (extrema.hpp), or
+  // the series' peak and w at `points`, measured by the program before it reports; the nodal ones
+  // are read off `nodes`.
   FieldMeasures measures;
   NodalExtremes nodal;        // of *nodes
   double total_force = NAN;   // the contact force, summed over the sample rows
@@ -55,7 +59,7 @@ struct Report {
   std::string bar_note;
 };
 std::string nodal_csv(const NodalFields& f);
-std::string line_force_csv(const Problem& p, const LineForce& f);
+std::string line_force_csv(const Problem& p, const LineForce& f, const LineFigures& g);
 std::string summary_json(const Report& r);
 std::string summary_text(const Report& r);
 std::string error_bars_text(const Report& r);  // the lines of summary_text that give the error bars  // the few lines printed at the end of a run
