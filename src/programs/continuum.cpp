@@ -212,13 +212,13 @@ std::string answer(const Study& s) {
          "\n";
 }
 
-// A sampling's name as a caption begins with it.
+// The words.md key of a sampling's name, with which its table's caption begins.
 std::string sampling_title(const std::string& k) {
-  if (k == "edge") return "Edge sampling with splines (the default)";
-  if (k == "edge-points") return "Edge sampling at points";
-  if (k == "gauss") return "Gauss sampling";
-  if (k == "nodes") return "Nodal sampling";
-  return k + " sampling";
+  if (k == "edge") return words("continuum.title_edge");
+  if (k == "edge-points") return words("continuum.title_edge_points");
+  if (k == "gauss") return words("continuum.title_gauss");
+  if (k == "nodes") return words("continuum.title_nodes");
+  throw std::logic_error("continuum: no caption for the sampling '" + k + "'");
 }
 
 std::string markdown(const Study& s) {
@@ -244,7 +244,7 @@ std::string markdown(const Study& s) {
       for (const Quantity* q : shown) o << " | " << (std::isfinite(r.*q->field) ? row_value(r, *q) : "n/a");
       o << " |\n";
     }
-    o << "\nTable: " << words("continuum.sampling_caption", {{"sampling", sampling_title(k)}}) << "\n\n";
+    o << "\nTable: " << sampling_title(k) << ", " << words("continuum.sampling_caption") << "\n\n";
   }
   o << words("continuum.series_intro") << "\n\n"
        "| sampling | n | max w | order | total force | order | line load, pointwise | order |\n"
