@@ -215,6 +215,10 @@ struct CellBlocks {
   std::vector<int> met;
   Eigen::MatrixXd Pl, Bl, El;
   VectorXd fl;
+  // add_point's scratch, F - I_h F and Lap psi for every function met, kept from point to point:
+  // allocating them per point cost as much as the arithmetic.
+  std::vector<KinkValue> D;
+  VectorXd lp;
   void reset() { met.clear(), Pl.setZero(16, 8), Bl.setZero(16, 8), El.setZero(8, 8), fl.setZero(8); }
   int local(int k) {
     for (size_t i = 0; i < met.size(); ++i)
@@ -239,10 +243,8 @@ void add_point(const Grid& g, const KinkEnrichment& e, const Field& f, double x0
   const double x = e.cx + r * cs, y = e.cy + r * sn;
   const LocalBasis lb = bfs_basis((x - x0) / g.h, (y - y0) / g.h, g.h);
   const Radial F = cube(r - e.a), chi = cutoff(e, r - e.a);
-  // F - I_h F for every function met in the cell, kept between calls: allocating it per point cost
-  // as much as the arithmetic.
-  static thread_local std::vector<KinkValue> D;
-  static thread_local VectorXd lp;
+  std::vector<KinkValue>& D = cb.D;
+  VectorXd& lp = cb.lp;
   D.assign(L, KinkValue{});
   lp.resize(L);
   for (int l = 0; l < L; ++l) {
