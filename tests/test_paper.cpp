@@ -4,7 +4,10 @@
 // and when code is tagged with an equation the document does not derive.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <fstream>
 #include <cctype>
 #include <cstdio>
@@ -74,6 +77,98 @@ TEST(Layout, TheMathematicsLaunchesNoProcessAndOpensNoFile) {
     EXPECT_FALSE(std::regex_search(code, m, io)) << p.filename() << " uses " << m.str();
   }
   EXPECT_GE(files, 40);
+}
+
+// The modules of src/ (a header and its .cpp: their path under src/ without the extension) and the
+// modules each includes with quotes, found as the compiler finds them: beside the including file,
+// then in src/ and src/programs/support/ (a configured header by its .in).
+std::map<std::string, std::set<std::string>> include_graph() {
+  std::map<std::string, std::set<std::string>> g;
+  const fs::path src = kRoot / "src";
+  const auto module = [&](const fs::path& p) {
+    std::string name = fs::relative(p, src).replace_extension().string();
+    if (p.extension() == ".in") name = fs::path(name).replace_extension().string();  // x.hpp.in
+    return name;
+  };
+  const std::regex include(R"re(#include "([^"]+)")re");
+  for (const auto& p : sources(src, true)) {
+    const std::string from = module(p);
+    g[from];
+    for (const std::string& header : matches(slurp(p), include))
+      for (const fs::path& dir : {p.parent_path(), src, src / "programs" / "support"}) {
+        const fs::path found = fs::exists(dir / header) ? dir / header : dir / (header + ".in");
+        if (!fs::exists(found)) continue;
+        if (const std::string to = module(found); to != from) g[from].insert(to);
+        break;
+      }
+  }
+  return g;
+}
+
+// A cycle of the graph as "a -> b -> ... -> a", or empty: a depth-first search that meets a module
+// still on its path has closed one.
+std::string find_cycle(const std::map<std::string, std::set<std::string>>& g) {
+  std::map<std::string, int> state;  // 0 unseen, 1 on the path, 2 done
+  std::vector<std::string> path;
+  std::function<std::string(const std::string&)> visit = [&](const std::string& m) -> std::string {
+    state[m] = 1, path.push_back(m);
+    if (const auto it = g.find(m); it != g.end())
+      for (const std::string& to : it->second) {
+        if (state[to] == 1) {
+          std::string c;
+          for (auto k = std::find(path.begin(), path.end(), to); k != path.end(); ++k) c += *k + " -> ";
+          return c + to;
+        }
+        if (state[to] == 0)
+          if (std::string c = visit(to); !c.empty()) return c;
+      }
+    state[m] = 2, path.pop_back();
+    return "";
+  };
+  for (const auto& [m, _] : g)
+    if (state[m] == 0)
+      if (std::string c = visit(m); !c.empty()) return c;
+  return "";
+}
+
+// The layers: no include closes a cycle, and the library (src/) includes nothing of the programs
+// (src/programs/ and its support/), which sit above it.
+TEST(Layout, TheIncludesFormLayersWithNoCycle) {
+  const auto g = include_graph();
+  EXPECT_GE(g.size(), 60u);  // the scan found the modules
+  EXPECT_EQ(find_cycle(g), "");
+  // The search finds a cycle when there is one.
+  auto broken = g;
+  ASSERT_EQ(broken.at("scene").count("grid"), 1u);
+  broken["grid"].insert("scene");
+  EXPECT_NE(find_cycle(broken), "");
+  for (const auto& [from, to] : g) {
+    if (from.rfind("programs/", 0) == 0) continue;
+    for (const std::string& t : to) EXPECT_NE(t.rfind("programs/", 0), 0u) << from << " includes " << t;
+  }
+}
+
+// A scene travels whole (scene.hpp): no function takes the rectangle together with the obstacle or
+// the load as separate parameters.
+TEST(Layout, NoSignatureCarriesTheRectangleTheObstacleAndTheLoadApart) {
+  const std::regex params(R"(\(([^()]*)\))");
+  const std::regex rectangle(R"(\bdouble l[xy]\b)"), obstacle(R"(\b(obstacle|phi|Cylinder)\b)"), load(R"(\bload\b)");
+  int lists = 0;
+  for (const auto& p : sources(kRoot / "src", true)) {
+    const std::string code = slurp(p);
+    for (std::sregex_iterator it(code.begin(), code.end(), params), end; it != end; ++it, ++lists) {
+      const std::string list = (*it)[1];
+      const int parts = std::regex_search(list, rectangle) + std::regex_search(list, obstacle) + std::regex_search(list, load);
+      EXPECT_LT(parts, 3) << p.filename() << ": (" << list << ")";
+    }
+  }
+  EXPECT_GE(lists, 1000);
+  // The scan sees the signature the Scene replaced.
+  const std::string old = "Scene field_scene(double lx, double ly, Field obstacle, Field load);";
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(old, m, params));
+  const std::string list = m[1];
+  EXPECT_EQ(std::regex_search(list, rectangle) + std::regex_search(list, obstacle) + std::regex_search(list, load), 3);
 }
 
 // No function of src/ or tests/ runs over 100 lines. A function starts at a line in the first
