@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -253,4 +254,38 @@ TEST(PenaltyFreeFem, TheForceFromTheEquationIsThePenaltysIntegral) {
   wide.cylinder->radius = 0.6;
   const nlohmann::json c = run_freefem(kPenalty, mesh(2), scene_args(wide, points()) + " -scheme nonlinear -continuation 0 -tol 1e-13 -eps 1e-4 -eps-min 1e-4 -sampling vertices", scratch().path("dual_clamped.json"));
   EXPECT_EQ(c.at("total_contact_force").get<double>(), c.at("force_by_penalty_integral").get<double>());
+}
+
+// The script's round-off estimate (penalty_hct.edp, region ff-roundoff) from its own residual: it
+// must hold what another summation order leaves, measured by solving again with two OpenBLAS
+// threads instead of one (UMFPACK's dense blocks then add in another order), and it must lie below
+// the worst case u h^-4 it replaces. The quadrature fallback's force has no estimate.
+TEST(PenaltyFreeFem, ItsRoundoffEstimateHoldsWhatAnotherSummationOrderLeaves) {
+  const char* before = std::getenv("OPENBLAS_NUM_THREADS");
+  const std::string saved = before ? before : "";
+  int moved = 0;
+  for (int n : {2, 4}) {
+    PenaltyRun run[2];
+    for (int t = 0; t < 2; ++t) {
+      setenv("OPENBLAS_NUM_THREADS", t ? "2" : "1", 1);
+      run[t] = penalty_values(run_freefem(kPenalty, mesh(n), scene_args(paper_scene(), points()) +
+                                                                 " -scheme nonlinear -continuation 0 -tol 1e-13 -eps 1e-6 -eps-min 1e-6 -sampling disk",
+                                          scratch().path("roundoff" + std::to_string(n) + "_" + std::to_string(t) + ".json")));
+    }
+    const double dw = std::abs(run[0].max_w - run[1].max_w), df = std::abs(run[0].force - run[1].force);
+    moved += (dw > 0) + (df > 0);
+    for (const PenaltyRun& r : run) {
+      EXPECT_GE(r.max_w_roundoff, dw) << n;
+      EXPECT_GE(r.force_roundoff, df) << n;
+      EXPECT_LT(r.max_w_roundoff, freefem_roundoff(r.h, r.max_w)) << n;
+      EXPECT_LT(r.force_roundoff, freefem_roundoff(r.h, r.force)) << n;
+    }
+  }
+  if (before) setenv("OPENBLAS_NUM_THREADS", saved.c_str(), 1); else unsetenv("OPENBLAS_NUM_THREADS");
+  EXPECT_GT(moved, 0) << "one and two BLAS threads gave identical answers: the test measured nothing";
+  const PenaltyRun q = penalty_values(run_freefem(kPenalty, mesh(2), scene_args(paper_scene(), points()) +
+                                                                         " -scheme nonlinear -continuation 0 -tol 1e-13 -eps 1e-4 -eps-min 1e-4 -sampling quadrature",
+                                                  scratch().path("roundoff_quadrature.json")));
+  EXPECT_TRUE(std::isnan(q.force_roundoff));
+  EXPECT_GT(q.max_w_roundoff, 0);
 }

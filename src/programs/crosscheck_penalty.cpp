@@ -190,6 +190,7 @@ struct EpsRun {
   std::string code;
   int cells = 0;
   double h = 0, max_w = 0, force = 0;
+  double w_noise = 0, f_noise = 0;  // each value's round-off, to whose digits the CSV prints it
 };
 struct EpsComparison {
   double eps = 0;
@@ -334,12 +335,13 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
       const int n = s.eps_levels[j];
       const PenaltyRun& r = ff_runs[k * s.eps_levels.size() + j];
       if (!r.converged) throw std::runtime_error("penalty_hct.edp did not converge at eps = " + fmt("%g", eps) + ": " + r.why);
-      part.eps_runs.push_back({kFreefemCode, 4 * n, r.h, r.max_w, r.force});
+      const double wn = roundoff_of(r, r.max_w_roundoff, r.max_w), fn = roundoff_of(r, r.force_roundoff, r.force);
+      part.eps_runs.push_back({kFreefemCode, 4 * n, r.h, r.max_w, r.force, wn, fn});
       fw.push_back(r.max_w), ff.push_back(r.force);
-      fwn.push_back(freefem_roundoff(r.h, r.max_w)), ffn.push_back(freefem_roundoff(r.h, r.force));
+      fwn.push_back(wn), ffn.push_back(fn);
     }
     for (size_t j = 0; j < s.eps_ns.size(); ++j)
-      part.eps_runs.push_back({kOurDiskCode, s.eps_ns[j], 1.0 / s.eps_ns[j], our[k].w[j], our[k].f[j]});
+      part.eps_runs.push_back({kOurDiskCode, s.eps_ns[j], 1.0 / s.eps_ns[j], our[k].w[j], our[k].f[j], our[k].w_noise[j], our[k].f_noise[j]});
     EpsComparison c{eps, extrapolate(fw, fwn), extrapolate(ff, ffn), extrapolate(our[k].w, our[k].w_noise),
                     extrapolate(our[k].f, our[k].f_noise), {}, {}};
     c.w = compare_limits(c.ff_w, c.our_w);
@@ -469,10 +471,9 @@ std::string eps_csv(const Setup& s, const EpsPart& part) {
   for (size_t k = 0, i = 0; k < comparisons.size(); ++k)
     for (size_t j = 0; j < s.eps_levels.size() + s.eps_ns.size(); ++j, ++i) {
       const EpsRun& r = eps_runs[i];
-      // to the digits each code's round-off leaves (freefem_roundoff; ours, Newton's floor of 1e-12 of w)
-      auto noise = [&](double v) { return r.code == kFreefemCode ? freefem_roundoff(r.h, v) : 1e-12 * std::abs(v); };
+      // to the digits each code's round-off leaves (FreeFEM's estimate from its residual; ours, Newton's floor)
       ecsv << fmt("%g", comparisons[k].eps) << "," << r.code << "," << r.cells << "," << fmt("%.6g", r.h) << ","
-           << fmt_above(r.max_w, noise(r.max_w), 10, 'g') << "," << fmt_above(r.force, noise(r.force), 10, 'g') << "\n";
+           << fmt_above(r.max_w, r.w_noise, 10, 'g') << "," << fmt_above(r.force, r.f_noise, 10, 'g') << "\n";
     }
   return ecsv.str();
 }

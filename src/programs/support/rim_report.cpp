@@ -85,7 +85,6 @@ std::string rim_summary_json(const Report& r) {
 
 std::string rim_summary_text(const Report& r) {
   const RimAnswer& a = *r.series;
-  const RimSeries& s = a.finest;
   std::ostringstream o;
   o << (r.converged ? "converged" : "NOT CONVERGED: " + r.message) << "\n";
   o << "series: " << a.rows.size() << " truncations, the last with " << a.rows.back().unknowns

@@ -102,7 +102,6 @@ Json levels_json(const SolveResult& s, double eps_unit) {
 
 // The exact solver's certificate, or the penalty run's residual and error bound.
 void check_json(Json& j, const Report& r) {
-  const Problem& p = *r.problem;
   const SolveResult& s = *r.result;
   if (r.certificate) {
     const Certificate& c = *r.certificate;
