@@ -104,11 +104,11 @@ test-fast: build ## the unit tests alone, the mathematics (under 30 s here)
 
 crosscheck: results/crosscheck.md $(CROSSCHECK_PENALTY) $(PENALTY_FIGURE) $(TABLE_FIGURE) ## FreeFEM (HCT, gmsh) against this code, exactly and by the paper's penalty method: results/crosscheck.md, results/crosscheck_penalty.md
 
-$(CROSSCHECK) &: $(BUILD)/crosscheck reference/square_with_circle.geo reference/disk_with_punch.geo reference/contact_hct.edp reference/checked_solve.idp reference/plate_constants.csv $(PAPER_NUMBERS) | deps
+$(CROSSCHECK) &: $(BUILD)/crosscheck reference/square_with_circle.geo reference/disk_with_punch.geo reference/contact_hct.edp reference/checked_solve.idp reference/mirror_quarter.idp reference/plate_constants.csv $(PAPER_NUMBERS) | deps
 	scripts/step.sh "results/crosscheck.md: FreeFEM and this code on the square; FreeFEM on the disk" "30 s" $(BUILD)/crosscheck --out results --work $(BUILD)/crosscheck-work
 
 # The penalty cross-check reads our table, contraction factors and Fig. 2 data from results/.
-$(CROSSCHECK_PENALTY) &: $(BUILD)/crosscheck_penalty reference/square_with_circle.geo reference/penalty_hct.edp reference/contact_hct.edp reference/checked_solve.idp \
+$(CROSSCHECK_PENALTY) &: $(BUILD)/crosscheck_penalty reference/square_with_circle.geo reference/penalty_hct.edp reference/contact_hct.edp reference/checked_solve.idp reference/mirror_quarter.idp \
                          reference/paper_table.csv reference/plate_constants.csv $(PAPER_NUMBERS) results/table.csv results/contraction.csv \
                          results/fig2.csv results/fig2_mesh.csv | deps
 	scripts/step.sh "results/crosscheck_penalty.md: the FreeFEM penalty script against the table of the paper and this code at fixed eps and in Fig. 2" "4 min" $(BUILD)/crosscheck_penalty --out results --work $(BUILD)/crosscheck-penalty-work
@@ -135,7 +135,7 @@ $(CONTINUUM_DATA) &: $(BUILD)/continuum $(PAPER_NUMBERS)
 liftoff: $(LIFTOFF) ## scenes where the plate lifts off part of the rim: three kinds of rows, and FreeFEM on fitted meshes (about 2 min)
 
 # The timings file is written by the same run; it is not byte-identical between runs.
-$(LIFTOFF) &: $(BUILD)/liftoff reference/square_with_circle.geo reference/quarter_square_with_circle.geo reference/contact_hct.edp reference/checked_solve.idp | deps
+$(LIFTOFF) &: $(BUILD)/liftoff reference/square_with_circle.geo reference/quarter_square_with_circle.geo reference/contact_hct.edp reference/checked_solve.idp reference/mirror_quarter.idp | deps
 	scripts/step.sh "results/liftoff*: scenes where the plate lifts off part of the rim, and FreeFEM on fitted meshes" "2 min" $(BUILD)/liftoff --out results --work $(BUILD)/liftoff-work
 
 kink: $(KINK) ## the plain space against the one that carries the kink at the rim (D31), three scenes against the series (about 40 s)
@@ -200,7 +200,7 @@ results/micro_benchmarks.md: $(BUILD)/micro_bench
 results/speed_vs_error.svg results/speed_vs_error.png: $(BENCH)
 
 # The whole plate process against the continuum limit; timings differ on every run.
-$(TTA) &: $(BUILD)/time_to_accuracy $(BUILD)/plate $(BUILD)/peer_snesvi results/rim_answer.csv reference/square_with_circle.geo reference/quarter_square_with_circle.geo reference/contact_hct.edp reference/checked_solve.idp
+$(TTA) &: $(BUILD)/time_to_accuracy $(BUILD)/plate $(BUILD)/peer_snesvi results/rim_answer.csv reference/square_with_circle.geo reference/quarter_square_with_circle.geo reference/contact_hct.edp reference/checked_solve.idp reference/mirror_quarter.idp
 	scripts/step.sh "results/time_to_accuracy*: whole plate/SNESVI/FreeFEM runs against the continuum limit" "3 min" $(BUILD)/time_to_accuracy --plate $(BUILD)/plate --answer results/rim_answer.csv --out results
 
 results/time_to_accuracy.svg results/time_to_accuracy.png: results/time_to_accuracy.csv
