@@ -4,6 +4,7 @@
 // cells next to it. A scene that is mirror-symmetric about x = lx/2 and y = ly/2 has a solution that
 // is too, and contact_hct.edp -symmetry quarter solves for it on this quarter alone.
 //   gmsh -2 -format msh22 -setnumber n 4 [-setnumber lx 2 -setnumber ly 1 -setnumber r 0.25] quarter_square_with_circle.geo -o mesh.msh
+//   [-setnumber grade 30 -setnumber ring 2]: the ring inside the circle graded as in square_with_circle.geo
 // Physical tags, read by FreeFEM's gmshload as labels: 1 = clamped boundary, 2 = the circle's arc,
 // 3 = the mirror lines; and as regions: 1 = inside the circle, 2 = outside.
 If (!Exists(n))
@@ -33,9 +34,21 @@ If (Exists(cy))
 EndIf
 cx = lx / 2;
 cy = ly / 2;
+// grade and ring as in square_with_circle.geo: the ring's `ring` n radial cells on one map of k / M1
+// whose slope at the central square is `grade` times its slope at the circle.
+If (!Exists(grade))
+  grade = 1;
+EndIf
+If (!Exists(ring))
+  ring = 1;
+EndIf
+If (!(grade >= 1 && grade <= 1e6 && ring >= 1 && ring == Round(ring)))
+  Error("quarter_square_with_circle.geo: grade must be in [1, 1e6] and ring a whole number >= 1 (grade = %g, ring = %g)", grade, ring);
+  Abort;
+EndIf
 H = 2 * n;      // half of the whole mesh's 4 n: cells along this eighth of the circle, along half a
                 // side of the central square and along half a side of the plate
-M1 = n;         // cells from the central square out to the circle, as in the whole mesh
+M1 = ring * n;  // cells from the central square out to the circle, as in the whole mesh
 M2 = 3 * n;     // cells from the circle out to the plate's corners, as in the whole mesh
 a = 0.4 * r;    // half side of the whole mesh's central square
 s = Sqrt(0.5);
@@ -50,7 +63,8 @@ Circle(8) = {5, 1, 6}; Circle(9) = {6, 1, 7};                                 //
 Line(10) = {5, 8}; Line(11) = {6, 9}; Line(12) = {7, 10};                     // spokes out
 Line(13) = {8, 9}; Line(14) = {9, 10};                                        // the plate's sides
 Transfinite Curve{1, 2, 3, 4, 8, 9, 13, 14} = H + 1;
-Transfinite Curve{5, 6, 7} = M1 + 1;
+// The spokes run from the square to the circle: a progression below 1 shrinks the cells outwards.
+Transfinite Curve{5, 6, 7} = M1 + 1 Using Progression grade^(-1 / M1);
 Transfinite Curve{10, 11, 12} = M2 + 1;
 Curve Loop(1) = {-4, -3, -2, -1};  Plane Surface(1) = {1};
 Curve Loop(2) = {2, 6, -8, -5};    Plane Surface(2) = {2};
