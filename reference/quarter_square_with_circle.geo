@@ -2,7 +2,7 @@
 // on the plate (cx = lx/2, cy = ly/2): the same O-grid cut along the plate's two mirror lines, which
 // are grid lines of the whole mesh, so level n has the same 4 n cells per quarter circle and the same
 // cells next to it. A scene that is mirror-symmetric about x = lx/2 and y = ly/2 has a solution that
-// is too, and contact_hct.edp -symmetry quarter solves for it on this quarter alone.
+// is too, and contact_hct.edp and penalty_hct.edp -symmetry quarter solve for it on this quarter alone.
 //   gmsh -2 -format msh22 -setnumber n 4 [-setnumber lx 2 -setnumber ly 1 -setnumber r 0.25] quarter_square_with_circle.geo -o mesh.msh
 //   [-setnumber grade 30 -setnumber ring 2]: the ring inside the circle graded as in square_with_circle.geo
 // Physical tags, read by FreeFEM's gmshload as labels: 1 = clamped boundary, 2 = the circle's arc,

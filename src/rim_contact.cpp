@@ -731,14 +731,11 @@ LineForce rim_line_force(const RimSeries& s) {
   return f;
 }
 
-LineFigures rim_line_figures(const RimSeries& s) {
+LineFigures rim_line_figures(const RimSeries& s, const LineForce& f) {
   LineFigures g;
   g.q0 = s.q(0), g.q45 = s.q(M_PI / 4);
-  for (int k = 0; k < kLineLoadAngles; ++k) {
-    const double t = 2 * M_PI * k / kLineLoadAngles;
-    g.theta.push_back(t), g.x.push_back(s.scene.cx + s.scene.radius * std::cos(t)), g.y.push_back(s.scene.cy + s.scene.radius * std::sin(t));
-    g.q.push_back(s.q(t));
-  }
+  g.theta = f.theta, g.q = f.q;
+  for (double t : f.theta) g.x.push_back(s.scene.cx + s.scene.radius * std::cos(t)), g.y.push_back(s.scene.cy + s.scene.radius * std::sin(t));
   return g;
 }
 

@@ -150,8 +150,9 @@ RimAnswer rim_answer(const Scene& s, int levels = 6, bool extended = false, int 
 // kLineLoadAngles equal angles from 0, the rim's length, the total (D18), the mean q_cos[0], and the
 // extremes over those angles.
 LineForce rim_line_force(const RimSeries& s);
-// q at 0 and pi/4 and the same table with its points on the rim (no fit: the series is the function).
-LineFigures rim_line_figures(const RimSeries& s);
+// q at 0 and pi/4, and f's table (rim_line_force's) with its points on the rim (no fit: the series
+// is the function).
+LineFigures rim_line_figures(const RimSeries& s, const LineForce& f);
 
 // max |m12| over the plate (Fig. 2's quantity, off the grid): on a lattice of (k + 1)^2 points, then
 // on finer lattices about the best one.

@@ -33,7 +33,8 @@ inline std::vector<std::pair<double, double>> read_msh_nodes(std::istream& in) {
 // The whole plate's mesh made from a quarter's (MSH 2) by reflecting it in x = cx and y = cy, so
 // that it is exactly mirror-symmetric. square_with_circle.geo's is not: its alternating diagonals
 // are mirror images in 414 of 640 triangles at n = 2, and its own rim forces then differ from their
-// mirror images by 4e-9 of the largest, more than the round-off bound below. The mirror lines (tag 3)
+// mirror images by 4e-9 of the largest, more than the round-off bound the exact script's quarter test
+// holds them to (tests/test_crosscheck.cpp). The mirror lines (tag 3)
 // become interior and are dropped. With `half`, only the reflection in y = cy: the lower half, whose
 // mirror line x = cx keeps its tag.
 inline void unfold_quarter_mesh(const std::string& quarter, const std::string& whole, double cx, double cy, bool half = false) {

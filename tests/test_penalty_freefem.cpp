@@ -261,8 +261,12 @@ TEST(PenaltyFreeFem, TheForceFromTheEquationIsThePenaltysIntegral) {
 // threads instead of one (UMFPACK's dense blocks then add in another order), and it must lie below
 // the worst case u h^-4 it replaces. The quadrature fallback's force has no estimate.
 TEST(PenaltyFreeFem, ItsRoundoffEstimateHoldsWhatAnotherSummationOrderLeaves) {
-  const char* before = std::getenv("OPENBLAS_NUM_THREADS");
-  const std::string saved = before ? before : "";
+  // OPENBLAS_NUM_THREADS as it was, put back however the test ends.
+  struct Restore {
+    const char* before = std::getenv("OPENBLAS_NUM_THREADS");
+    std::string saved = before ? before : "";
+    ~Restore() { before ? setenv("OPENBLAS_NUM_THREADS", saved.c_str(), 1) : unsetenv("OPENBLAS_NUM_THREADS"); }
+  } restore;
   int moved = 0;
   for (int n : {2, 4}) {
     PenaltyRun run[2];
@@ -281,7 +285,6 @@ TEST(PenaltyFreeFem, ItsRoundoffEstimateHoldsWhatAnotherSummationOrderLeaves) {
       EXPECT_LT(r.force_roundoff, freefem_roundoff(r.h, r.force)) << n;
     }
   }
-  if (before) setenv("OPENBLAS_NUM_THREADS", saved.c_str(), 1); else unsetenv("OPENBLAS_NUM_THREADS");
   EXPECT_GT(moved, 0) << "one and two BLAS threads gave identical answers: the test measured nothing";
   const PenaltyRun q = penalty_values(run_freefem(kPenalty, mesh(2), scene_args(paper_scene(), points()) +
                                                                          " -scheme nonlinear -continuation 0 -tol 1e-13 -eps 1e-4 -eps-min 1e-4 -sampling quadrature",

@@ -125,7 +125,7 @@ std::string csv(const std::vector<Row>& rows) {
   std::ostringstream o;
   o << "# kink_study: exact solves with the default rows, in the plain space and with the kink carried (D31); errors\n"
        "# relative to the rim-contact series: max w (the field's peak), the total force, and the line load's largest\n"
-       "# distance from the series' q over 720 angles, over the mean load. Made by build/kink_study\n"
+       "# distance from the series' q over " << kLineLoadAngles << " angles, over the mean load. Made by build/kink_study\n"
        "# cond: the 2-norm condition number of K scaled to a unit diagonal, estimated by power and inverse iteration,\n"
        "# on the grids up to n = 128 (160 on the 1.25 plate)\n"
        "scene,space,n,h,unknowns,certified,max_w,err_max_w,total_force,err_total_force,err_line_pointwise,cond\n";

@@ -270,13 +270,13 @@ void refuse_group(const CLI::Option_group* group, const std::string& why) {
 // its rim the edge unless --edge says otherwise) or an expression obstacle, and the load.
 plate::Scene scene_of(const Options& o) {
   using namespace plate;
-  const Scene plate = Scene::rectangle(o.lx, o.ly);
+  const Scene rectangle = Scene::rectangle(o.lx, o.ly);
   Scene s;
   if (o.obstacle == "cylinder") {
     const auto [cx, cy] = parse_pair("--centre", o.centre);
-    s = plate.over(Cylinder{cx, cy, o.radius, o.R});
+    s = rectangle.over(Cylinder{cx, cy, o.radius, o.R});
   } else {
-    s = plate.over(o.obstacle);
+    s = rectangle.over(o.obstacle);
   }
   if (o.edge != "auto") s.edge = parse_edge(o.edge);
   return s.loaded(o.load);
@@ -523,8 +523,7 @@ plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::Vec
   return result;
 }
 
-// Scheme (3a) or (5a) with eps continuation; not converged if the plate sinks deeper into the
-// obstacle than tol, whatever the steps say.
+// Scheme (3a) or (5a) with eps continuation, and the force density its answer implies.
 plate::SolveResult solve_penalty(Run& r, const plate::Problem& problem, plate::VectorXd& xi, plate::Progress& progress) {
   using namespace plate;
   const double L4 = r.opt.eps_unit;
@@ -538,17 +537,18 @@ plate::SolveResult solve_penalty(Run& r, const plate::Problem& problem, plate::V
     };
   SolveResult result = solve(problem, r.opt);
   xi = contact_force_density(problem, result.w, result.eps);
-  const double below = constraint_violation(problem, result.w);
-  if (result.converged && below > r.opt.tol) {  // the penalty lets the plate into the obstacle by about eps xi
-    result.converged = false;
-    result.message = fmt("the plate lies %.3g below the obstacle at a sample point", below) +
-                     fmt(", more than tol = %.3g (the penalty's own error at eps = ", r.opt.tol) +
-                     fmt("%g); use a smaller --eps-min or --scheme exact", result.eps / L4);
-  }
-  r.report.measures = measure_field(problem, result.w, r.report.nu, r.report.points);
-  r.report.total_force = total_contact_force(problem, xi);
-  r.report.penalty_residual = penalty_residual(problem, result.w, result.eps);
   return result;
+}
+
+// A penalty run's answer is not converged if the plate sinks deeper into the obstacle than tol,
+// whatever the steps say (the penalty lets it in by about eps xi): `below`, the constraint violation.
+void judge_penalty(const Run& r, double below, plate::SolveResult& result) {
+  using namespace plate;
+  if (!result.converged || below <= r.opt.tol) return;
+  result.converged = false;
+  result.message = fmt("the plate lies %.3g below the obstacle at a sample point", below) +
+                   fmt(", more than tol = %.3g (the penalty's own error at eps = ", r.opt.tol) +
+                   fmt("%g); use a smaller --eps-min or --scheme exact", result.eps / r.opt.eps_unit);
 }
 
 // Scale-free penalty: eps in units of L^4 (the stiffness K ~ L^-2 against eps^-1 M ~ L^2 / eps),
@@ -616,10 +616,18 @@ Outputs solve_grid(const Options& o, Run& r, plate::SceneSolution& scene, plate:
     result = solve_penalty(r, *r.penalised, xi, progress);
   }
   const Problem& problem = exact ? scene.whole() : *r.penalised;
+  // Everything the outputs state of the answer, once: the exact solver measured its own (the field's
+  // extremes, w at the points, the force) as it solved every grid; the penalty's are measured here.
+  r.report.violation = constraint_violation(problem, result.w);
+  if (!exact) {
+    judge_penalty(r, r.report.violation, result);
+    r.report.measures = measure_field(problem, result.w, r.report.nu, r.report.points);
+    r.report.total_force = total_contact_force(problem, xi);
+    r.report.penalty_residual = penalty_residual(problem, result.w, result.eps);
+  }
   progress.stage(result.converged ? "solved; writing the outputs" : "not converged; writing the outputs");
   nodes = nodal_fields(problem, result.w, xi, r.report.nu);
   r.report.nodal = nodal_extremes(nodes);
-  r.report.violation = constraint_violation(problem, result.w);
   r.report.dip_below_edge = dip_below_edge(problem, result.w);
   r.report.xi = xi;
   r.report.line = line_force(problem, xi);
@@ -653,7 +661,7 @@ Outputs solve_series(const Options& o, Run& r, std::optional<plate::RimAnswer>& 
   for (const auto& [x, y] : report.points) report.measures.w_at.push_back(s.w(x, y));
   report.measures.max_abs_m12.value = rim_max_abs_m12(s, report.nu);
   report.line = rim_line_force(s);
-  report.line_figures = rim_line_figures(s);
+  report.line_figures = rim_line_figures(s, report.line);
   report.converged = answer->premise.holds && answer->settled;
   if (!answer->premise.holds)
     report.message = "the contact is not the whole rim (" + answer->premise.why +

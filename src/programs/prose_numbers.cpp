@@ -153,6 +153,10 @@ void crosscheck_penalty_numbers(Numbers& num, const std::string& results) {
   for (const auto& [q, bound] : target) {
     const auto rows = t.where("quantity", q);
     if (rows.empty()) throw std::runtime_error(t.path + ": no " + q + " rows");
+    // The document calls the first eps's tolerance FreeFEM's Richardson bar: its order steady and its
+    // bar above round-off. If a rebuild finds otherwise the sentence is false, and the build stops.
+    if (t.text(rows.front(), "freefem_steady") != "1" || t.text(rows.front(), "freefem_bar").rfind("< ", 0) == 0)
+      throw std::runtime_error(t.path + ": the first " + q + " tolerance is no longer FreeFEM's Richardson bar; paper.md says it is");
     num.put("crosscheck_penalty." + q + "_relative_first", t.text(rows.front(), "relative"), src + " first " + q + " row: relative");
     // A relative below round-off is printed as its bound, "< 2e-08": the bound is what it can claim.
     auto relative = [&](std::size_t r) {
@@ -166,6 +170,10 @@ void crosscheck_penalty_numbers(Numbers& num, const std::string& results) {
       if (v >= rel.hi) worst = t.text(r, "relative");
       rel.add(v);
       meets += v <= bound;
+      // The document says that where a tolerance misses its target, FreeFEM's bar is its last
+      // increment (its sequence not steady).
+      if (v > bound && t.text(r, "freefem_steady") != "0")
+        throw std::runtime_error(t.path + ": a " + q + " row misses its target with FreeFEM's order steady; paper.md says it is not");
       const auto [it, fresh] = met.emplace(t.text(r, "eps"), true);
       it->second = it->second && v <= bound;
     }

@@ -356,7 +356,7 @@ std::string report(const std::vector<Run>& runs, const std::vector<Config>& conf
 std::string csv(const std::vector<Run>& runs) {
   std::ostringstream o;
   o << "# time_to_accuracy: the whole plate process per solver, sampling and n; errors relative to the continuum\n"
-       "# answer (rim_answer.csv, the rim-contact series); err_line: the default's line load, max over 720 angles of\n"
+       "# answer (rim_answer.csv, the rim-contact series); err_line: the default's line load, max over " << kLineLoadAngles << " angles of\n"
        "# |q - q_series| over the mean; status: the exit status (0 certified, 3 not converged). Timings vary.\n"
        "config,n,status,seconds,peak_mib,max_w,total_force,err_max_w,err_total_force,err_line\n";
   for (size_t i = 0; i < runs.size(); ++i) {

@@ -62,6 +62,6 @@ std::string nodal_csv(const NodalFields& f);
 std::string line_force_csv(const Problem& p, const LineForce& f, const LineFigures& g);
 std::string summary_json(const Report& r);
 std::string summary_text(const Report& r);
-std::string error_bars_text(const Report& r);  // the lines of summary_text that give the error bars  // the few lines printed at the end of a run
+std::string error_bars_text(const Report& r);  // the lines of summary_text that give the error bars
 
 }  // namespace plate
