@@ -37,6 +37,18 @@ TEST(Words, AMarkerBecomesItsEntryWithTheValuesInPlace) {
   EXPECT_EQ(w.render("no marker here\n"), "no marker here\n");
 }
 
+// A program that chooses between phrases passes the chosen phrase's marker as a value, so that the
+// phrase's words, too, live in the words file.
+TEST(Words, AValueThatIsAMarkerIsRenderedInItsPlace) {
+  const WordsFile f("## a.answer\nmax w = @{w} (@{how}).\n\n## a.richardson\nRichardson, order @{order}\n\n## a.finest\nthe finest grid\n");
+  const Words w(f.path);
+  EXPECT_EQ(w.render(words("a.answer", {{"w", "0.0977"}, {"how", words("a.richardson", {{"order", "3.0"}})}})),
+            "max w = 0.0977 (Richardson, order 3.0).");
+  EXPECT_EQ(w.render(words("a.answer", {{"w", "0.0977"}, {"how", words("a.finest")}})), "max w = 0.0977 (the finest grid).");
+  // The inner marker is held to the same rules as any other.
+  EXPECT_NE(error_of(w, words("a.answer", {{"w", "1"}, {"how", words("a.richardson")}})).find("@{order}"), std::string::npos);
+}
+
 TEST(Words, AMarkerAndItsEntryThatDisagreeAreErrorsNamingThem) {
   const WordsFile f("## a.caption\nThe plate at n = @{n}.\n");
   const Words w(f.path);

@@ -188,12 +188,13 @@ std::string answer(const Study& s) {
   const Extrapolation& m = s.fits.at({"edge", "mean line force"});
   const RimSeries& y = s.yardstick.finest;
   const RimAnswer& a = s.yardstick;
-  // Each estimate with its bar and how it was found: a cell of a sentence, as a verdict's is of a table.
+  // Each estimate with its bar and how it was found: a cell of a sentence, as a verdict's is of a
+  // table. The phrase for how is chosen here and its words are in reports/words.md.
   auto one = [](const Extrapolation& e) {
+    const std::string how = e.steady ? words("continuum.basis_richardson", {{"order", format_order(e.orders.back(), e.order_noise.back())}})
+                                     : words("continuum.basis_finest");
     return fmt_above(e.limit, e.limit_noise, 9, 'g') + " +- " + bar_number(e, 2) + " (" +
-           (bar_is_roundoff(e) ? "the round-off bound; " : "") +
-           (e.steady ? "Richardson, order " + format_order(e.orders.back(), e.order_noise.back())
-                     : "finest grid; the order is not steady") + ")";
+           (bar_is_roundoff(e) ? words("continuum.basis_roundoff", {{"then", how}}) : how) + ")";
   };
   return words("continuum.answer_series", {{"max_w", rim_digits(a.rows.back().max_w, a.bar_max_w)},
                                            {"bar_w", fmt_up(a.bar_max_w)},

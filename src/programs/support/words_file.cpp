@@ -70,7 +70,9 @@ std::string Words::render(const std::string& text) const {
     if (filled.find("@{") != std::string::npos) throw std::invalid_argument(path_ + ": " + key + " has a slot that is not @{letters, digits, _}");
     for (const auto& [name, v] : given)
       if (!used.count(name)) throw std::invalid_argument(path_ + ": " + key + " has no @{" + name + "}, which the report fills");
-    out.append(begin, (*m)[0].first).append(filled);
+    // A value may itself be a marker (a phrase chosen by the program, such as how a bar was found):
+    // it is rendered in its place.
+    out.append(begin, (*m)[0].first).append(filled.find("<!--words") == std::string::npos ? filled : render(filled));
     begin = (*m)[0].second;
   }
   out.append(begin, text.cend());
