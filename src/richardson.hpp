@@ -12,6 +12,11 @@ struct Extrapolation {
   // before. Not steady: the finest value, and the last increment (the error of the finest value if
   // the increments from there on at least halve each time, which nothing here can check).
   double limit = 0, bar = 0;
+  // Steady: how far the limit moves if the order is taken `spread` lower or higher, as far as two
+  // orders may differ and still be called steady. `bar` compares two triples that both use orders
+  // observed alike, so it does not carry this doubt; a comparison that must hold may add it. 0 when
+  // not steady.
+  double order_doubt = 0;
   // What the round-off of the values (the `noise` passed in) can change in each of the above.
   std::vector<double> order_noise;
   double limit_noise = 0, bar_noise = 0;

@@ -42,6 +42,28 @@ TEST(Richardson, AnIrregularSequenceKeepsItsFinestValueAndLastIncrement) {
   EXPECT_DOUBLE_EQ(e.bar, std::abs(v[4] - v[3]));
 }
 
+// Terms of nearby orders can give two triples the same observed order: on v = 1 + h^4 + 0.18 h^3.5
+// - h^5 over h = 1/8 ... 1/64 both orders are 3.74 (as FreeFEM's force at eps = 1e-5 on the quarter
+// meshes, 3.7), steady, and the limit misses 1 by about five times the bar, which compares two
+// triples that share that order. Moving the order by the steady spread (order_doubt) carries it.
+TEST(Richardson, TheOrdersDoubtCarriesWhatTheBarMissesWhereOrdersAgreeByChance) {
+  std::vector<double> v;
+  for (int k = 0; k < 4; ++k) {
+    const double h = std::pow(0.5, 3 + k);
+    v.push_back(1 + std::pow(h, 4) + 0.18 * std::pow(h, 3.5) - std::pow(h, 5));
+  }
+  const Extrapolation e = extrapolate(v);
+  ASSERT_TRUE(e.steady);
+  const double p = e.orders.back();
+  EXPECT_NEAR(p, 3.74, 0.01);
+  EXPECT_GT(std::abs(e.limit - 1), 4 * e.bar);
+  EXPECT_LE(std::abs(e.limit - 1), e.bar + e.order_doubt);
+  // The doubt is the limit's move with the order lowered by the spread (the larger way here).
+  const double lower = v[3] + (v[3] - v[2]) / (std::pow(2.0, p - kSteadySpread) - 1);
+  EXPECT_DOUBLE_EQ(e.order_doubt, std::abs(lower - e.limit));
+  EXPECT_EQ(extrapolate({0, 1, 1.25, 1.28125}).order_doubt, 0);  // not steady: none
+}
+
 TEST(Richardson, OrdersThatDriftAreNotSteady) {
   // increments 1, 1/4, 1/32: orders 2 then 3, more than 0.3 apart
   const Extrapolation e = extrapolate({0, 1, 1.25, 1.28125});
