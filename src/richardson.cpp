@@ -39,8 +39,10 @@ Extrapolation extrapolate(const std::vector<double>& v, const std::vector<double
   e.steady = true;
   e.limit = richardson(v[m - 2], v[m - 1], p);
   e.bar = std::abs(e.limit - richardson(v[m - 3], v[m - 2], q));
-  e.order_doubt = std::max(std::abs(richardson(v[m - 2], v[m - 1], p - spread) - e.limit),
-                           std::abs(richardson(v[m - 2], v[m - 1], p + spread) - e.limit));
+  // An order within the spread of 0 could be no order at all: then nothing bounds the limit.
+  e.order_doubt = p - spread <= 0 ? INFINITY
+                                  : std::max(std::abs(richardson(v[m - 2], v[m - 1], p - spread) - e.limit),
+                                             std::abs(richardson(v[m - 2], v[m - 1], p + spread) - e.limit));
   // The limit moves with c and b, and with p through 1 / (2^p - 1).
   auto limit_noise = [&](int b, int c, double order, double order_noise) {
     const double g = std::pow(2.0, order) - 1;

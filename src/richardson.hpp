@@ -15,7 +15,7 @@ struct Extrapolation {
   // Steady: how far the limit moves if the order is taken `spread` lower or higher, as far as two
   // orders may differ and still be called steady. `bar` compares two triples that both use orders
   // observed alike, so it does not carry this doubt; a comparison that must hold may add it. 0 when
-  // not steady.
+  // not steady; infinite when the order lowered by `spread` is not positive.
   double order_doubt = 0;
   // What the round-off of the values (the `noise` passed in) can change in each of the above.
   std::vector<double> order_noise;

@@ -505,7 +505,8 @@ std::string relative_text(const Agreement& a, double value) {
 std::string limits_csv(const EpsPart& part) {
   std::ostringstream csv;
   csv << "# Written by build/crosscheck_penalty (make crosscheck). Each code's Richardson limit of the penalised\n"
-         "# problem at fixed eps (the penalty over the true disk, D30) with its bar; steady = 1 where the observed\n"
+         "# problem at fixed eps (the penalty over the true disk, D30) with its bar (where steady, (D13)'s bar plus how far\n"
+         "# the limit moves with the order inside the steady spread, richardson.hpp's order_doubt); steady = 1 where the observed\n"
          "# order is steady (order: the last one, else empty); tolerance = the sum of the bars; relative = tolerance\n"
          "# over our limit, the smallest relative change of the scene the row detects; agree = difference <= tolerance.\n";
   csv << "eps,quantity,freefem_limit,freefem_bar,freefem_steady,freefem_order,ours_limit,ours_bar,ours_steady,"

@@ -123,10 +123,16 @@ Run freefem(const Case& s, int m, const std::string& work) {
   return run;
 }
 
-// The error bar on the finest value of a sequence (error_bar.hpp), as a table cell.
+// The error bar on the finest value of a sequence (error_bar.hpp), as a cell of a verdict: the phrase
+// for how it was found is chosen here, its words are in reports/words.md.
 std::string bar_cell(const ErrorBar& b) {
   if (b.basis == "none") return "—";
-  return "± " + fmt_up(b.bar) + (b.steady ? fmt(" (Richardson, order %.2f)", b.order) : " (" + b.basis + "; not steady)");
+  std::string how;
+  if (b.steady) how = words("liftoff.bar_richardson", {{"order", fmt("%.2f", b.order)}});
+  else if (b.basis == "last difference") how = words("liftoff.bar_last");
+  else if (b.basis == "largest of the last two differences") how = words("liftoff.bar_largest_two");
+  else throw std::logic_error("liftoff: no words for an error bar found by '" + b.basis + "'");
+  return "± " + fmt_up(b.bar) + " (" + how + ")";
 }
 
 // Our bar (D29) from the four finest grids of one kind of rows: both of the report's lines that set

@@ -52,8 +52,14 @@ std::string Words::render(const std::string& text) const {
     if (entry == entries_.end()) throw std::invalid_argument(path_ + " has no entry " + key);
     std::map<std::string, std::string> given;
     const std::string list = (*m)[2];
-    for (std::sregex_iterator v(list.begin(), list.end(), value); v != end; ++v)
-      if (!given.emplace((*v)[1], unescape_word_value((*v)[2])).second) throw std::invalid_argument(key + ": the value " + std::string((*v)[1]) + " is given twice");
+    for (std::sregex_iterator v(list.begin(), list.end(), value); v != end; ++v) {
+      // A value may itself be a marker (a phrase the program chose, such as how a bar was found):
+      // it is rendered first. Each level peels one layer of escaping, so this ends; the entries
+      // themselves are never rendered again.
+      std::string given_value = unescape_word_value((*v)[2]);
+      if (given_value.find("<!--words") != std::string::npos) given_value = render(given_value);
+      if (!given.emplace((*v)[1], given_value).second) throw std::invalid_argument(key + ": the value " + std::string((*v)[1]) + " is given twice");
+    }
     std::set<std::string> used;
     std::string filled;
     const std::string& words = entry->second;
@@ -70,9 +76,7 @@ std::string Words::render(const std::string& text) const {
     if (filled.find("@{") != std::string::npos) throw std::invalid_argument(path_ + ": " + key + " has a slot that is not @{letters, digits, _}");
     for (const auto& [name, v] : given)
       if (!used.count(name)) throw std::invalid_argument(path_ + ": " + key + " has no @{" + name + "}, which the report fills");
-    // A value may itself be a marker (a phrase chosen by the program, such as how a bar was found):
-    // it is rendered in its place.
-    out.append(begin, (*m)[0].first).append(filled.find("<!--words") == std::string::npos ? filled : render(filled));
+    out.append(begin, (*m)[0].first).append(filled);
     begin = (*m)[0].second;
   }
   out.append(begin, text.cend());
