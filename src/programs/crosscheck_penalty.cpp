@@ -100,13 +100,6 @@ std::string mesh(const Setup& s, int n, RingGrading rg = {}, bool quarter = fals
   }
   return msh;
 }
-// FreeFEM solves the fixed-eps problems on the quarter of the plate that its mirror lines leave,
-// which the scene has when the circle sits at the plate's centre: a fourth of the unknowns
-// (penalty_hct.edp -symmetry quarter holds the mirror lines as contact_hct.edp does).
-bool centred(const Scene& scene) {
-  const Cylinder& c = *scene.cylinder;
-  return std::abs(c.cx - scene.lx / 2) <= 1e-12 * scene.lx && std::abs(c.cy - scene.ly / 2) <= 1e-12 * scene.ly;
-}
 // @region layer-grade
 // How FreeFEM's ring is graded at fixed eps (D30). Inside the disk the penalised plate obeys
 // Lap^2 w + eps^-1 (w - phi) = 0 where it dips, whose solutions vary on the length eps^(1/4): the
@@ -305,7 +298,9 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
   // the band where it acts.
   std::vector<RingGrading> gradings;
   for (double eps : s.eps_values) gradings.push_back(layer_grading(sc, eps));
-  const bool quarter = centred(sc);
+  // FreeFEM solves on the quarter of the plate the mirror lines leave when the circle sits at its
+  // centre: a fourth of the unknowns (penalty_hct.edp -symmetry quarter).
+  const bool quarter = circle_at_centre(sc);
   prepare_runs(s, s.eps_levels, gradings, quarter);
   const size_t L = s.eps_levels.size();
   std::vector<PenaltyRun> ff_runs(s.eps_values.size() * L);

@@ -67,10 +67,6 @@ struct Run {
   bool quarter = false;                       // FreeFEM on the quarter its mirror lines leave
 };
 
-// A cylinder at the plate's centre leaves two mirror lines, and FreeFEM can then solve on the quarter
-// mesh (contact_hct.edp -symmetry quarter), a quarter of the unknowns: one mesh finer in the same time.
-bool mirror_symmetric(const Case& s) { return s.cx == s.lx / 2 && s.cy == s.ly / 2; }
-
 Scene scene_of(const Case& s) { return Scene::rectangle(s.lx, s.ly).over(Cylinder{s.cx, s.cy, kRadius, kR}); }
 
 Run solve(const Case& s, const Rows& r, int n) {
@@ -102,9 +98,11 @@ Run solve(const Case& s, const Rows& r, int n) {
 // FreeFEM's exact script on the O-grid mesh with 4 m cells per quarter circle (its quarter, when
 // the scene has mirror lines).
 Run freefem(const Case& s, int m, const std::string& work) {
-  const bool quarter = mirror_symmetric(s);
-  const std::string base = work + "/" + std::to_string(&s - kScenes) + "_" + std::to_string(m);
   const Scene scene = scene_of(s);
+  // A cylinder at the plate's centre leaves two mirror lines, and FreeFEM can then solve on the quarter
+  // mesh (contact_hct.edp -symmetry quarter), a quarter of the unknowns: one mesh finer in the same time.
+  const bool quarter = circle_at_centre(scene);
+  const std::string base = work + "/" + std::to_string(&s - kScenes) + "_" + std::to_string(m);
   gmsh_mesh(quarter ? "reference/quarter_square_with_circle.geo" : "reference/square_with_circle.geo", circle_numbers(scene, m),
             base + ".msh");
   write_points(base + ".points", {{s.cx, s.cy}});
@@ -216,7 +214,7 @@ int main(int argc, char** argv) {
           progress.stage(std::string(s.name) + ", " + r.name + ", h = 1/" + std::to_string(16 * k));
           runs.push_back(solve(s, r, s.n16 * k));
         }
-      for (int m = 2; m <= (mirror_symmetric(s) ? 2 * freefem_finest : freefem_finest); m *= 2) {
+      for (int m = 2; m <= (circle_at_centre(scene_of(s)) ? 2 * freefem_finest : freefem_finest); m *= 2) {  // one finer on a quarter
         progress.stage(std::string(s.name) + ", FreeFEM, " + std::to_string(4 * m) + " cells a quarter circle");
         runs.push_back(freefem(s, m, work));
       }

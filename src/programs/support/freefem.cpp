@@ -73,6 +73,11 @@ std::vector<std::pair<std::string, double>> circle_numbers(const Scene& scene, i
   return {{"n", n}, {"lx", scene.lx}, {"ly", scene.ly}, {"cx", c.cx}, {"cy", c.cy}, {"r", c.radius}};
 }
 
+bool circle_at_centre(const Scene& scene) {
+  const Cylinder& c = cylinder_of(scene);
+  return std::abs(c.cx - scene.lx / 2) <= 1e-12 * scene.lx && std::abs(c.cy - scene.ly / 2) <= 1e-12 * scene.ly;
+}
+
 void write_points(const std::string& path, const std::vector<std::pair<double, double>>& points) {
   std::ofstream out(path);
   out.precision(17);

@@ -28,6 +28,9 @@ std::string scene_args(const Scene& scene, const std::string& points_file);
 // gmsh's numbers for the scene's rectangle and circle, on the mesh of level n (4 n cells per
 // quarter circle).
 std::vector<std::pair<std::string, double>> circle_numbers(const Scene& scene, int n);
+// Whether the cylinder sits at the plate's centre, so that the scene's mirror lines cut it into the
+// quarter that quarter_square_with_circle.geo meshes (to the .geo's own 1e-12 of a side).
+bool circle_at_centre(const Scene& scene);
 
 // The check points, as the script's -points file wants them: their number, then "x y" each.
 void write_points(const std::string& path, const std::vector<std::pair<double, double>>& points);
