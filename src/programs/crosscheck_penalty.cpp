@@ -341,10 +341,9 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
       const int n = s.eps_levels[j];
       const PenaltyRun& r = ff_runs[k * s.eps_levels.size() + j];
       if (!r.converged) throw std::runtime_error("penalty_hct.edp did not converge at eps = " + fmt("%g", eps) + ": " + r.why);
-      const double wn = roundoff_of(r, r.max_w_roundoff, r.max_w), fn = roundoff_of(r, r.force_roundoff, r.force);
-      part.eps_runs.push_back({kFreefemCode, 4 * n, r.h, r.max_w, r.force, wn, fn});
+      part.eps_runs.push_back({kFreefemCode, 4 * n, r.h, r.max_w, r.force, r.max_w_roundoff, r.force_roundoff});
       fw.push_back(r.max_w), ff.push_back(r.force);
-      fwn.push_back(wn), ffn.push_back(fn);
+      fwn.push_back(r.max_w_roundoff), ffn.push_back(r.force_roundoff);
     }
     for (size_t j = 0; j < s.eps_ns.size(); ++j)
       part.eps_runs.push_back({kOurDiskCode, s.eps_ns[j], 1.0 / s.eps_ns[j], our[k].w[j], our[k].f[j], our[k].w_noise[j], our[k].f_noise[j]});

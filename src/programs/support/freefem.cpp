@@ -139,10 +139,6 @@ CheckValues freefem_values(const nlohmann::json& j, int cells, double radius) {
   }
 }
 
-double roundoff_of(const PenaltyRun& r, double estimate, double value) {
-  return std::isfinite(estimate) ? estimate : freefem_roundoff(r.h, value);
-}
-
 PenaltyRun penalty_values(const nlohmann::json& j) {
   try {
     PenaltyRun r;
@@ -161,11 +157,11 @@ PenaltyRun penalty_values(const nlohmann::json& j) {
     if (j.contains("lambda1h")) r.lambda1h = j.at("lambda1h").get<double>();
     r.max_w = j.at("max_w").get<double>();
     r.force = j.at("total_contact_force").get<double>();
-    const auto estimate = [&](const char* key) {
+    const auto roundoff = [&](const char* key, double value) {
       const double v = j.contains(key) ? j.at(key).get<double>() : -1;
-      return v >= 0 ? v : NAN;  // -1: no estimate
+      return v >= 0 ? v : freefem_roundoff(r.h, value);  // -1: the script made no estimate
     };
-    r.max_w_roundoff = estimate("max_w_roundoff"), r.force_roundoff = estimate("force_roundoff");
+    r.max_w_roundoff = roundoff("max_w_roundoff", r.max_w), r.force_roundoff = roundoff("force_roundoff", r.force);
     r.max_m12 = j.at("max_m12").get<double>();
     r.max_density = j.at("max_contact_density").get<double>();
     r.residual = j.at("residual").get<double>();

@@ -71,17 +71,14 @@ struct PenaltyRun {
   std::vector<PenaltyLevel> levels;
   double lambda1h = NAN;  // -eigen 1 only
   double max_w = 0, force = 0, max_m12 = 0, max_density = 0;
-  // How far round-off moves max w and the force, the script's estimate from its last residual
-  // (penalty_hct.edp, region ff-roundoff); NaN where it makes none (the force from the penalty's
-  // integral). roundoff_of gives the worst case freefem_roundoff there.
-  double max_w_roundoff = NAN, force_roundoff = NAN;
+  // How far round-off moves max w and the force: the script's estimate from its last residual
+  // (penalty_hct.edp, region ff-roundoff), or where it makes none (the force from the penalty's
+  // integral) the worst case freefem_roundoff.
+  double max_w_roundoff = 0, force_roundoff = 0;
   double residual = 0;  // of (2a) at the answer, relative
   std::vector<double> w_at;
   double seconds = 0;
 };
-// The run's round-off in `estimate` (its max_w_roundoff or force_roundoff), or the worst case
-// freefem_roundoff(h, value) where the script made no estimate.
-double roundoff_of(const PenaltyRun& r, double estimate, double value);
 // Throws std::runtime_error naming a missing key.
 PenaltyRun penalty_values(const nlohmann::json& j);
 
