@@ -203,13 +203,17 @@ LineFigures line_figures(const Problem& p, const LineForce& f) {
   g.fit0 = line_force_fit(f, 0), g.fit45 = line_force_fit(f, M_PI / 4);
   if (f.spline_degree == 0) return g;
   const double r = f.length / (2 * M_PI);
-  const double cx = p.sampling.edge.x[0] - r * std::cos(f.theta[0]), cy = p.sampling.edge.y[0] - r * std::sin(f.theta[0]);
+  line_figures_circle(g, p.sampling.edge.x[0] - r * std::cos(f.theta[0]), p.sampling.edge.y[0] - r * std::sin(f.theta[0]), r);
+  for (double t : g.theta) g.q.push_back(line_force_value(f, t));
+  return g;
+}
+
+void line_figures_circle(LineFigures& g, double cx, double cy, double r) {
+  g.theta.clear(), g.x.clear(), g.y.clear();
   for (int k = 0; k < kLineLoadAngles; ++k) {
     const double t = 2 * M_PI * k / kLineLoadAngles;
     g.theta.push_back(t), g.x.push_back(cx + r * std::cos(t)), g.y.push_back(cy + r * std::sin(t));
-    g.q.push_back(line_force_value(f, t));
   }
-  return g;
 }
 
 }  // namespace plate

@@ -79,5 +79,8 @@ struct LineFigures {
   std::vector<double> theta, x, y, q;
 };
 LineFigures line_figures(const Problem& p, const LineForce& f);
+// The angles of the table, kLineLoadAngles equal steps from 0, and their points on the circle of
+// radius r about (cx, cy); g.q is left to the caller.
+void line_figures_circle(LineFigures& g, double cx, double cy, double r);
 
 }  // namespace plate

@@ -734,8 +734,8 @@ LineForce rim_line_force(const RimSeries& s) {
 LineFigures rim_line_figures(const RimSeries& s, const LineForce& f) {
   LineFigures g;
   g.q0 = s.q(0), g.q45 = s.q(M_PI / 4);
-  g.theta = f.theta, g.q = f.q;
-  for (double t : f.theta) g.x.push_back(s.scene.cx + s.scene.radius * std::cos(t)), g.y.push_back(s.scene.cy + s.scene.radius * std::sin(t));
+  line_figures_circle(g, s.scene.cx, s.scene.cy, s.scene.radius);
+  g.q = f.q;  // rim_line_force's values at the same angles
   return g;
 }
 
