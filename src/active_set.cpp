@@ -98,7 +98,9 @@ ExactResult solve_sequenced(Problem& p, const ExactOptions& o) {
     const auto t0 = Clock::now();
     coarse = make_problem(p.scene, coarser(g), p.spec);
     const double seconds_assemble = seconds_since(t0);
-    ExactResult rc = solve_sequenced(*coarse, o);
+    ExactOptions oc = o;
+    if (o.measure_levels && !o.measure_levels->coarser) oc.measure_levels.reset();
+    ExactResult rc = solve_sequenced(*coarse, oc);
     rc.levels.back().seconds += seconds_assemble;
     coarse_levels = rc.levels;
     wc = std::move(rc.w);  // even an uncertified coarse answer predicts the contact set well

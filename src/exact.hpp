@@ -48,6 +48,7 @@ struct ExactOptions {
   struct LevelMeasures {
     double nu = kPoissonRatio;
     std::vector<std::pair<double, double>> points;
+    bool coarser = true;  // false: the finest grid alone (its measures are the answer's; no error bars wanted)
   };
   std::optional<LevelMeasures> measure_levels;
 };

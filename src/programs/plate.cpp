@@ -489,8 +489,8 @@ void set_error_bars(Run& r, const std::vector<plate::ExactLevel>& levels) {
 }
 
 // The exact solver's answer in the penalty schemes' form, for one report: on the part of the plate
-// the scene's mirror lines leave (unless --symmetry none), unfolded onto the whole plate. Every grid
-// of the sequence is measured as it is done (the finest too: those are the answer's measures).
+// the scene's mirror lines leave (unless --symmetry none), unfolded onto the whole plate. The finest
+// grid is measured as it is done (those are the answer's measures), and with --estimate every grid.
 plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::VectorXd& xi, plate::Progress& progress) {
   using namespace plate;
   if (!progress.quiet()) r.exact_opt.on_iterate = [&](int cells, int iteration, int held, int changed) {
@@ -501,7 +501,8 @@ plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::Vec
       progress.stage(grid + "active-set iteration " + std::to_string(iteration) + ", " + std::to_string(held) +
                      " rows held, " + std::to_string(changed) + " to change");
   };
-  r.exact_opt.measure_levels = ExactOptions::LevelMeasures{r.report.nu, r.report.points};
+  // The coarser grids are measured only for the error bars.
+  r.exact_opt.measure_levels = ExactOptions::LevelMeasures{r.report.nu, r.report.points, r.estimate};
   scene = solve_exact_scene(r.scene, r.g.nx, r.spec, r.exact_opt, r.mirrors);
   set_error_bars(r, scene.result.levels);
   const ExactResult& exact = scene.result;
