@@ -28,11 +28,17 @@ Spline3 cubic_bspline(double x) {
 }
 
 // @region kink-functions
-// Eq. (D31): (r - a)_+^3 as a function of d = r - a, and its first two derivatives.
+// Eq. (D31): the radial profile g(d) = d_+^3 (1 - d / (2a)), d = r - a, and its first two
+// derivatives. The cube alone gives the third radial derivative its jump at the rim; on a circle
+// the plate's equation on both sides then forces the fourth to jump by -2/a times the third (D32),
+// which the second term carries, so the grid is left only the jumps from the fifth derivative on.
 struct Radial {
   double g = 0, g1 = 0, g2 = 0;
 };
-Radial cube(double d) { return d > 0 ? Radial{d * d * d, 3 * d * d, 6 * d} : Radial{}; }
+Radial kink_radial(double d, double a) {
+  if (!(d > 0)) return {};
+  return {d * d * d * (1 - d / (2 * a)), 3 * d * d - 2 * d * d * d / a, 6 * d - 6 * d * d / a};
+}
 
 // chi(d) and its first two derivatives: the quintic smoothstep, C^2, from 1 at inner to 0 at outer.
 Radial cutoff(const KinkEnrichment& e, double d) {
@@ -161,7 +167,7 @@ KinkEnrichment make_kink_enrichment(const Grid& g, const EdgeCurve& circle, int 
 KinkValue kink_profile(const KinkEnrichment& e, int k, double x, double y) {
   KinkValue v;
   const double dx = x - e.cx, dy = y - e.cy, r = std::hypot(dx, dy);
-  const Radial g = cube(r - e.a);
+  const Radial g = kink_radial(r - e.a, e.a);
   if (g.g2 == 0) return v;
   const double t = std::atan2(dy, dx);
   const SplinesAt s = splines_at(e, t < 0 ? t + 2 * M_PI : t);
@@ -178,7 +184,7 @@ SpMat kink_interpolant(const Grid& g, const KinkEnrichment& e) {
       const double dx = g.x(i) - e.cx, dy = g.y(j) - e.cy, r = std::hypot(dx, dy);
       // Only the nodes of squares where chi is not 0 are ever read: within outer + sqrt(2) cells.
       if (r - e.a >= e.outer + 1.5 * g.h) continue;
-      const Radial gr = cube(r - e.a);
+      const Radial gr = kink_radial(r - e.a, e.a);
       if (gr.g2 == 0) continue;
       const double th = std::atan2(dy, dx);
       const SplinesAt sp = splines_at(e, th < 0 ? th + 2 * M_PI : th);
@@ -242,7 +248,7 @@ void add_point(const Grid& g, const KinkEnrichment& e, const Field& f, double x0
   const int L = static_cast<int>(cb.met.size());
   const double x = e.cx + r * cs, y = e.cy + r * sn;
   const LocalBasis lb = bfs_basis((x - x0) / g.h, (y - y0) / g.h, g.h);
-  const Radial F = cube(r - e.a), chi = cutoff(e, r - e.a);
+  const Radial F = kink_radial(r - e.a, e.a), chi = cutoff(e, r - e.a);
   std::vector<KinkValue>& D = cb.D;
   VectorXd& lp = cb.lp;
   D.assign(L, KinkValue{});
@@ -349,7 +355,7 @@ KinkValue kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue
   const Radial chi = cutoff(e, r - e.a);
   KinkValue D;
   add(D, interpolant, -1.0);
-  const Radial F = cube(r - e.a);
+  const Radial F = kink_radial(r - e.a, e.a);
   if (F.g2 != 0) {
     const double th = std::atan2(dy, dx);
     const SplinesAt sp = splines_at(e, th < 0 ? th + 2 * M_PI : th);

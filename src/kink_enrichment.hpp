@@ -2,11 +2,12 @@
 // plate rests on the rim r = a, its third normal derivative jumps by the line load q(theta); a
 // bicubic cut by the circle cannot follow that, and the whole plate pays for it at order 3. The
 // space is widened by
-//   psi_k = chi (F_k - I_h F_k),   F_k(r, theta) = (r - a)_+^3 B_k(theta),
+//   psi_k = chi (F_k - I_h F_k),   F_k(r, theta) = (r - a)_+^3 (1 - (r - a) / (2a)) B_k(theta),
 // B_k the periodic cubic B-splines of the angle, I_h the grid's Hermite interpolant (nodal values,
 // slopes and twist), chi(d) a cut-off of the distance d = r - a: 1 up to 1.5 cells outside the rim,
 // 0 from 2.5 cells on. F_k is C^2 with its third radial derivative jumping by 6 B_k at the rim, so
-// psi_k is in H^2 (the space stays conforming) and carries the jump. Subtracting I_h F_k makes
+// psi_k is in H^2 (the space stays conforming) and carries the jump; its fourth jumps by -2/a times
+// that, as the plate's equation on either side of a circle demands (D32). Subtracting I_h F_k makes
 // psi_k vanish with its slopes and twist at every node: the grid's unknowns stay the nodal values of
 // the whole field, and psi_k is small wherever F_k is smooth, so the enlarged system stays about as
 // well conditioned as K (the stable GFEM of Babuska and Banerjee, CMAME 201-204, 2012; measured in

@@ -135,6 +135,32 @@ TEST(KinkEnrichment, VanishesAtNodesIsC1AndCarriesTheJump) {
   }
 }
 
+// On either side of the rim the plate obeys Lap^2 w = f, so the jumps of F_k must leave Lap^2 F_k
+// continuous: Lap^2 F_k -> 0 as r -> a from outside (F_k is 0 inside). With the cube alone it tends to
+// 12 B_k / a, the fourth-derivative jump (D32) missing; with (D32) carried what is left is the fifth
+// derivative's, linear in r - a. Lap^2 by the five-point stencil on the exact Laplacian of F_k.
+TEST(KinkEnrichment, CarriesTheFourthDerivativesJumpThatACircleForces) {
+  const Grid g = make_grid(32);
+  const KinkEnrichment e = make_kink_enrichment(g, kRim, 64);
+  const int k = 5;
+  const double theta = 2 * M_PI * k / e.knots;  // the centre of spline k: B_k = 2/3 there
+  auto lap = [&](double x, double y) {
+    const KinkValue v = kink_profile(e, k, x, y);
+    return v.wxx + v.wyy;
+  };
+  auto bilap = [&](double d) {
+    const double x = 0.5 + (e.a + d) * std::cos(theta), y = 0.5 + (e.a + d) * std::sin(theta), s = d / 8;
+    return (lap(x + s, y) + lap(x - s, y) + lap(x, y + s) + lap(x, y - s) - 4 * lap(x, y)) / (s * s);
+  };
+  const double missing = 12 * (2.0 / 3) / e.a;  // what the cube alone leaves at the rim
+  const double d = 1e-4, at_rim = 2 * bilap(d) - bilap(2 * d), slope = (bilap(2 * d) - bilap(d)) / d;
+  EXPECT_LT(std::abs(at_rim), 0.02 * missing);
+  // The slope is minus the fifth derivative's jump, which F_k leaves to the grid: 6 (7 B_k - 2 B_k'') /
+  // a^2 from [d/dr Lap^2 w] = 0 (D32's next term), B_k'' = -2 / spacing^2 at the spline's centre.
+  const double spacing = 2 * M_PI / e.knots, fifth = 6 * (7 * (2.0 / 3) + 4 / (spacing * spacing)) / (e.a * e.a);
+  EXPECT_NEAR(slope, -fifth, 0.05 * fifth);
+}
+
 // (D31) does not fit a circle too close to a clamped edge or too small for the grid, and says so.
 TEST(KinkEnrichment, RefusesWhereItDoesNotFit) {
   EXPECT_TRUE(kink_fits(make_grid(16), kRim));
