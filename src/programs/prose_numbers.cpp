@@ -426,6 +426,28 @@ void kink_numbers(Numbers& num, const std::string& results) {
     if (!t.text(r, "cond").empty()) num.put(key + "cond_" + n, fmt("%.1e", t.number(r, "cond")), where + "cond");
     before[key] = r;
   }
+  // paper.md says that with the kink carried max w is closer to the series than the plain space on
+  // every grid of every scene, and that its observed orders are not steady. If a rebuild finds
+  // otherwise a sentence is false, and the build stops here.
+  std::map<std::string, std::map<std::string, double>> plain;  // scene -> n -> err_max_w
+  std::map<std::string, std::vector<double>> kink_errors;      // scene -> err_max_w, coarse to fine
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    if (t.text(r, "space") == "plain") plain[t.text(r, "scene")][t.text(r, "n")] = t.number(r, "err_max_w");
+    else kink_errors[t.text(r, "scene")].push_back(t.number(r, "err_max_w"));
+  }
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    if (t.text(r, "space") != "kink") continue;
+    const auto p = plain[t.text(r, "scene")].find(t.text(r, "n"));
+    if (p != plain[t.text(r, "scene")].end() && !(t.number(r, "err_max_w") < p->second))
+      throw std::runtime_error(t.path + ": with the kink carried max w is not closer than the plain space on " + t.text(r, "scene") +
+                               ", n = " + t.text(r, "n") + "; paper.md says it is");
+  }
+  for (const auto& [scene, e] : kink_errors) {
+    std::vector<double> orders;
+    for (std::size_t k = 1; k < e.size(); ++k) orders.push_back(std::log2(e[k - 1] / e[k]));
+    if (!orders.empty() && *std::max_element(orders.begin(), orders.end()) - *std::min_element(orders.begin(), orders.end()) <= kSteadySpread)
+      throw std::runtime_error(t.path + ": with the kink carried max w converges at a steady order on " + scene + "; paper.md says it does not");
+  }
 }
 
 // Package versions of the machine that built the document (results/versions.csv, from dpkg).
