@@ -168,7 +168,7 @@ KinkValue kink_profile(const KinkEnrichment& e, int k, double x, double y) {
   KinkValue v;
   const double dx = x - e.cx, dy = y - e.cy, r = std::hypot(dx, dy);
   const Radial g = kink_radial(r - e.a, e.a);
-  if (g.g2 == 0) return v;
+  if (!(r > e.a)) return v;  // F_k is 0 on and inside the rim (g'' also vanishes at r = 2a)
   const double t = std::atan2(dy, dx);
   const SplinesAt s = splines_at(e, t < 0 ? t + 2 * M_PI : t);
   for (int i = 0; i < s.count; ++i)
@@ -185,7 +185,7 @@ SpMat kink_interpolant(const Grid& g, const KinkEnrichment& e) {
       // Only the nodes of squares where chi is not 0 are ever read: within outer + sqrt(2) cells.
       if (r - e.a >= e.outer + 1.5 * g.h) continue;
       const Radial gr = kink_radial(r - e.a, e.a);
-      if (gr.g2 == 0) continue;
+      if (!(r > e.a)) continue;
       const double th = std::atan2(dy, dx);
       const SplinesAt sp = splines_at(e, th < 0 ? th + 2 * M_PI : th);
       for (int s = 0; s < sp.count; ++s) {
@@ -257,7 +257,7 @@ void add_point(const Grid& g, const KinkEnrichment& e, const Field& f, double x0
     const auto p = cb.Pl.col(l);
     D[l].w = -p.dot(lb.v), D[l].wx = -p.dot(lb.dx), D[l].wy = -p.dot(lb.dy), D[l].wxx = -p.dot(lb.dxx), D[l].wyy = -p.dot(lb.dyy);
   }
-  if (F.g2 != 0)
+  if (r > e.a)
     for (int s = 0; s < sp.count; ++s) add(D[idx[s]], cartesian(F, sp.b[s], r, cs, sn), 1.0);
   const double fv = f(x, y);
   for (int l = 0; l < L; ++l) {
@@ -356,7 +356,7 @@ KinkValue kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue
   KinkValue D;
   add(D, interpolant, -1.0);
   const Radial F = kink_radial(r - e.a, e.a);
-  if (F.g2 != 0) {
+  if (r > e.a) {
     const double th = std::atan2(dy, dx);
     const SplinesAt sp = splines_at(e, th < 0 ? th + 2 * M_PI : th);
     for (int i = 0; i < sp.count; ++i) add(D, cartesian(F, sp.b[i], r, dx / r, dy / r), c[e.function_of_spline[sp.j[i]]]);

@@ -650,6 +650,9 @@ std::string fig2_md(const Setup& s, const Fig2Part& part) {
      << words("crosscheck_penalty.fig2_judged",
               {{"R", fmt("%g", s.scene.cylinder->height)},
                {"eps", fmt("%g", s.fig2_eps)},
+               // Where FreeFEM's values have no steady order its "limit" is its finest mesh and its bar the
+               // last increment (richardson.hpp): the reader is told, since the sentence says "limits".
+               {"ff_unsteady", c.ff_w.steady && c.ff_f.steady ? "" : " " + words("crosscheck_penalty.fig2_ff_unsteady")},
                {"ff_w", brief(c.ff_w)},
                {"our_w", brief(c.our_w)},
                {"w_diff", relative(c.w, c.our_w.limit)},
