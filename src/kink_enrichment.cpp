@@ -167,8 +167,8 @@ KinkEnrichment make_kink_enrichment(const Grid& g, const EdgeCurve& circle, int 
 KinkValue kink_profile(const KinkEnrichment& e, int k, double x, double y) {
   KinkValue v;
   const double dx = x - e.cx, dy = y - e.cy, r = std::hypot(dx, dy);
+  if (!(r > e.a)) return v;  // F_k is 0 on and inside the rim
   const Radial g = kink_radial(r - e.a, e.a);
-  if (!(r > e.a)) return v;  // F_k is 0 on and inside the rim (g'' also vanishes at r = 2a)
   const double t = std::atan2(dy, dx);
   const SplinesAt s = splines_at(e, t < 0 ? t + 2 * M_PI : t);
   for (int i = 0; i < s.count; ++i)
@@ -184,8 +184,8 @@ SpMat kink_interpolant(const Grid& g, const KinkEnrichment& e) {
       const double dx = g.x(i) - e.cx, dy = g.y(j) - e.cy, r = std::hypot(dx, dy);
       // Only the nodes of squares where chi is not 0 are ever read: within outer + sqrt(2) cells.
       if (r - e.a >= e.outer + 1.5 * g.h) continue;
-      const Radial gr = kink_radial(r - e.a, e.a);
       if (!(r > e.a)) continue;
+      const Radial gr = kink_radial(r - e.a, e.a);
       const double th = std::atan2(dy, dx);
       const SplinesAt sp = splines_at(e, th < 0 ? th + 2 * M_PI : th);
       for (int s = 0; s < sp.count; ++s) {

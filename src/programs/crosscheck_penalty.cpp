@@ -288,7 +288,6 @@ TablePart run_table(const Setup& s, const std::vector<PublishedRow>& paper, cons
     }
     table.push_back(row);
   }
-  std::vector<double> ff_lambdas, our_lambdas;
   for (int n : s.eigen_levels) {
     const Scene below = at_height(s.scene, -1);  // far under the plate: no contact
     const std::string out = s.work + "/eigen" + std::to_string(n) + ".json";
@@ -299,16 +298,16 @@ TablePart run_table(const Setup& s, const std::vector<PublishedRow>& paper, cons
     e.ok = r.converged && std::abs(e.measured - e.q) <= kEigenTol;
     all_ok = all_ok && e.ok;
     eigen.push_back(e);
-    ff_lambdas.push_back(r.lambda1h);
   }
   // Ours on the same sequence of halvings, the paper's Gauss sampling (its mass is the L2 mass of the
   // bicubics, as FreeFEM's penalty mass is of its triangles).
   for (int n : s.eigen_ns) {
     const Problem p = make_problem(at_height(s.scene, -1), make_grid(n), SamplingSpec{SamplingKind::Gauss});
-    our_lambdas.push_back(smallest_eigenpair(p.K, p.M).lambda);
+    part.our_lambdas.push_back(smallest_eigenpair(p.K, p.M).lambda);
   }
-  part.our_lambdas = our_lambdas;
-  part.limits = {judge_lambda1("FreeFEM", ff_lambdas, lambda1), judge_lambda1("ours", our_lambdas, lambda1)};
+  std::vector<double> ff_lambdas;
+  for (const EigenCheck& e : eigen) ff_lambdas.push_back(e.lambda1h);
+  part.limits = {judge_lambda1("FreeFEM", ff_lambdas, lambda1), judge_lambda1("ours", part.our_lambdas, lambda1)};
   for (const EigenLimit& l : part.limits) all_ok = all_ok && l.ok;
   return part;
 }
@@ -514,6 +513,9 @@ std::string tolerance_text(const Agreement& a) { return fmt_above(a.tolerance, a
 std::string relative_text(const Agreement& a, double value) {
   return fmt_above(a.tolerance / std::abs(value), a.tolerance_noise / std::abs(value), 2);
 }
+std::string relative_difference_text(const Agreement& a, double value) {
+  return fmt_above(a.difference / std::abs(value), a.difference_noise / std::abs(value), 2);
+}
 
 // The comparison itself, a row per eps and quantity: what the document quotes and check-results reads.
 std::string limits_csv(const EpsPart& part) {
@@ -701,9 +703,6 @@ std::string fig2_md(const Setup& s, const Fig2Part& part) {
      << words("crosscheck_penalty.fig2_caption",
               {{"cells", std::to_string(4 * s.fig2_level)}, {"n", std::to_string(part.our_n)}, {"eps", fmt("%g", s.fig2_eps)}})
      << "\n";
-  auto relative = [](const Agreement& a, double value) {
-    return fmt_above(a.difference / std::abs(value), a.difference_noise / std::abs(value), 2);
-  };
   md << "\n"
      << words("crosscheck_penalty.fig2_judged",
               {{"R", fmt("%g", s.scene.cylinder->height)},
@@ -713,12 +712,12 @@ std::string fig2_md(const Setup& s, const Fig2Part& part) {
                {"ff_unsteady", c.ff_w.steady && c.ff_f.steady ? "" : " " + words("crosscheck_penalty.fig2_ff_unsteady")},
                {"ff_w", brief(c.ff_w)},
                {"our_w", brief(c.our_w)},
-               {"w_diff", relative(c.w, c.our_w.limit)},
+               {"w_diff", relative_difference_text(c.w, c.our_w.limit)},
                {"w_tol", relative_text(c.w, c.our_w.limit)},
                {"w_missed", c.w.agree ? "" : " : NOT within"},
                {"ff_f", brief(c.ff_f)},
                {"our_f", brief(c.our_f)},
-               {"f_diff", relative(c.f, c.our_f.limit)},
+               {"f_diff", relative_difference_text(c.f, c.our_f.limit)},
                {"f_tol", relative_text(c.f, c.our_f.limit)},
                {"f_missed", c.f.agree ? "" : " : NOT within"},
                {"linear", part.fig2_linearity <= kLinearity ? "agree" : "DO NOT agree"},
@@ -787,7 +786,6 @@ int main(int argc, char** argv) {
     std::cerr << "crosscheck_penalty: bad input: " << bad << "\n";
     return kBadInput;
   }
-  auto wanted = [&](const std::string& part) { return wants(s, part); };
   s.geo = s.reference + "/square_with_circle.geo";
   s.quarter_geo = s.reference + "/quarter_square_with_circle.geo";
   s.penalty = s.reference + "/penalty_hct.edp";
@@ -808,22 +806,22 @@ int main(int argc, char** argv) {
     TablePart table;
     EpsPart eps;
     Fig2Part fig2;
-    if (wanted("table")) table = run_table(s, paper, ours_table, lambda1);
-    if (wanted("eps")) run_fixed_eps(s, eps);
-    if (wanted("rate")) run_rate(s, eps);
-    if (wanted("fig2")) fig2 = run_fig2(s, ours_fig2, eps);
+    if (wants(s, "table")) table = run_table(s, paper, ours_table, lambda1);
+    if (wants(s, "eps")) run_fixed_eps(s, eps);
+    if (wants(s, "rate")) run_rate(s, eps);
+    if (wants(s, "fig2")) fig2 = run_fig2(s, ours_fig2, eps);
     const bool all_ok = table.ok && eps.ok && fig2.ok;
 
     std::string md = "<!-- Written by build/crosscheck_penalty (make crosscheck); do not edit. -->\n\n";
-    if (wanted("table")) md += table_md(s, table, ours_contraction, lambda1);
-    if (wanted("eps")) md += eps_md(s, eps);
-    if (wanted("rate")) md += rate_md(s, eps);
-    if (wanted("fig2")) md += fig2_md(s, fig2);
+    if (wants(s, "table")) md += table_md(s, table, ours_contraction, lambda1);
+    if (wants(s, "eps")) md += eps_md(s, eps);
+    if (wants(s, "rate")) md += rate_md(s, eps);
+    if (wants(s, "fig2")) md += fig2_md(s, fig2);
     md += "\n" + words(all_ok ? "crosscheck_penalty.verdict_agree" : "crosscheck_penalty.verdict_fail") + "\n";
-    if (wanted("table")) write_file_atomically(s.out + "/crosscheck_penalty_table.csv", table_csv(s, table));
-    if (wanted("eps")) write_file_atomically(s.out + "/crosscheck_penalty_eps.csv", eps_csv(s, eps));
-    if (wanted("eps")) write_file_atomically(s.out + "/crosscheck_penalty_limits.csv", limits_csv(eps));
-    if (wanted("fig2")) write_file_atomically(s.out + "/crosscheck_penalty_fig2.csv", fig2_csv(s, fig2));
+    if (wants(s, "table")) write_file_atomically(s.out + "/crosscheck_penalty_table.csv", table_csv(s, table));
+    if (wants(s, "eps")) write_file_atomically(s.out + "/crosscheck_penalty_eps.csv", eps_csv(s, eps));
+    if (wants(s, "eps")) write_file_atomically(s.out + "/crosscheck_penalty_limits.csv", limits_csv(eps));
+    if (wants(s, "fig2")) write_file_atomically(s.out + "/crosscheck_penalty_fig2.csv", fig2_csv(s, fig2));
     write_file_atomically(s.out + "/crosscheck_penalty.md", md);
     std::cerr << "crosscheck_penalty: " << (all_ok ? "every check agrees" : "some checks fail") << " (" << s.out
               << "/crosscheck_penalty.md)\n";
