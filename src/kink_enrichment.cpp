@@ -2,6 +2,7 @@
 #include "kink_enrichment.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -215,62 +216,93 @@ Psi psi_from(const KinkValue& D, double r, double cs, double sn, const Radial& c
 }  // namespace
 
 namespace {
-// One cell's share of the blocks: its 16 unknowns against the functions met in it, and those among
-// themselves, with the interpolant's coefficients on the cell (Pl) that each function subtracts.
+// One cell's quadrature points, gathered first, and the functions met in it with the interpolant's
+// coefficients on the cell (Pl) that each subtracts. The blocks are then formed by matrix products
+// over all the cell's points at once: point by point, as outer products, they cost three times as
+// much.
 struct CellBlocks {
   std::vector<int> met;
-  Eigen::MatrixXd Pl, Bl, El;
-  VectorXd fl;
-  // add_point's scratch, F - I_h F and Lap psi for every function met, kept from point to point:
-  // allocating them per point cost as much as the arithmetic.
-  std::vector<KinkValue> D;
-  VectorXd lp;
-  void reset() { met.clear(), Pl.setZero(16, 8), Bl.setZero(16, 8), El.setZero(8, 8), fl.setZero(8); }
+  Eigen::MatrixXd Pl;
+  std::vector<double> r, cs, sn, wt;  // each point: radius, the ray's cosine and sine, weight
+  std::vector<SplinesAt> sp;          // the splines there, and the local index of each one's function
+  std::vector<std::array<int, 4>> idx;
+  // Kept from cell to cell, so that no point allocates.
+  Eigen::MatrixXd basis, lap_phi, D, psi, lap_psi, weighted;
+  VectorXd load;
+  void reset() {
+    met.clear(), Pl.setZero(16, 8);
+    r.clear(), cs.clear(), sn.clear(), wt.clear(), sp.clear(), idx.clear();
+  }
   int local(int k) {
     for (size_t i = 0; i < met.size(); ++i)
       if (met[i] == k) return static_cast<int>(i);
     met.push_back(k);
     const int n = static_cast<int>(met.size());
-    if (n > Bl.cols()) {
-      const int c = 2 * n, old = n - 1;
-      Pl.conservativeResize(16, c), Bl.conservativeResize(16, c), El.conservativeResize(c, c), fl.conservativeResize(c);
-      Pl.rightCols(c - old).setZero(), Bl.rightCols(c - old).setZero(), fl.tail(c - old).setZero();
-      El.rightCols(c - old).setZero(), El.bottomRows(c - old).setZero();
+    if (n > Pl.cols()) {
+      const int old = static_cast<int>(Pl.cols());
+      Pl.conservativeResize(16, 2 * n);
+      Pl.rightCols(2 * n - old).setZero();
     }
     return n - 1;
   }
+  void add(double radius, double c, double s, double weight, const SplinesAt& at) {
+    r.push_back(radius), cs.push_back(c), sn.push_back(s), wt.push_back(weight), sp.push_back(at);
+    std::array<int, 4> local_of{};
+    for (int k = 0; k < at.count; ++k) local_of[k] = -1;
+    idx.push_back(local_of);
+  }
 };
-
-// Eq. (D31)'s block integrands at the point r along the ray at angle th (cosine cs, sine sn), weight
-// wt: (Lap phi_i, Lap psi_k), (Lap psi_k, Lap psi_l) and (f, psi_k) for the functions met in the cell.
-void add_point(const Grid& g, const KinkEnrichment& e, const Field& f, double x0, double y0, double r, double cs, double sn,
-               double wt, const SplinesAt& sp, const int* idx, CellBlocks& cb) {
-  const int L = static_cast<int>(cb.met.size());
-  const double x = e.cx + r * cs, y = e.cy + r * sn;
-  const LocalBasis lb = bfs_basis((x - x0) / g.h, (y - y0) / g.h, g.h);
-  const Radial F = kink_radial(r - e.a, e.a), chi = cutoff(e, r - e.a);
-  std::vector<KinkValue>& D = cb.D;
-  VectorXd& lp = cb.lp;
-  D.assign(L, KinkValue{});
-  lp.resize(L);
-  for (int l = 0; l < L; ++l) {
-    const auto p = cb.Pl.col(l);
-    D[l].w = -p.dot(lb.v), D[l].wx = -p.dot(lb.dx), D[l].wy = -p.dot(lb.dy), D[l].wxx = -p.dot(lb.dxx), D[l].wyy = -p.dot(lb.dyy);
-  }
-  if (r > e.a)
-    for (int s = 0; s < sp.count; ++s) add(D[idx[s]], cartesian(F, sp.b[s], r, cs, sn), 1.0);
-  const double fv = f(x, y);
-  for (int l = 0; l < L; ++l) {
-    const Psi p = psi_from(D[l], r, cs, sn, chi);
-    lp[l] = p.lap;
-    cb.fl[l] += wt * fv * p.v;
-  }
-  cb.Bl.leftCols(L) += wt * (lb.dxx + lb.dyy) * lp.transpose();
-  cb.El.topLeftCorner(L, L) += wt * lp * lp.transpose();
-}
 }  // namespace
 
 // @region kink-blocks
+// F = g(r) S(theta) of (D31) added to the value, slopes and second derivatives xx, yy of D (the five
+// that Lap psi needs), from its polar derivatives; ir = 1 / r.
+static void add_profile(const Radial& g, const Spline3& S, double ir, double c, double s, double* d) {
+  const double Fr = g.g1 * S.v, Ft = g.g * S.d1, Frr = g.g2 * S.v, Frt = g.g1 * S.d1, Ftt = g.g * S.d2;
+  const double cc = c * c, ss = s * s, cs2 = 2 * c * s, ir2 = ir * ir;
+  d[0] += g.g * S.v;
+  d[1] += c * Fr - s * ir * Ft;
+  d[2] += s * Fr + c * ir * Ft;
+  d[3] += cc * Frr - cs2 * ir * Frt + ss * ir2 * Ftt + ss * ir * Fr + cs2 * ir2 * Ft;
+  d[4] += ss * Frr + cs2 * ir * Frt + cc * ir2 * Ftt + cc * ir * Fr - cs2 * ir2 * Ft;
+}
+
+// Eq. (D31)'s blocks on one cell from its gathered points: Bl = (Lap phi_i, Lap psi_k) (16 x L),
+// El = (Lap psi_k, Lap psi_l) (L x L) and fl = (f, psi_k).
+static void cell_blocks(const Grid& g, const KinkEnrichment& e, const Field& f, double x0, double y0, CellBlocks& cb,
+                        Eigen::MatrixXd& Bl, Eigen::MatrixXd& El, VectorXd& fl) {
+  const int np = static_cast<int>(cb.r.size()), L = static_cast<int>(cb.met.size());
+  cb.basis.resize(16, 5 * np), cb.lap_phi.resize(16, np), cb.load.resize(np);
+  for (int p = 0; p < np; ++p) {
+    const double x = e.cx + cb.r[p] * cb.cs[p], y = e.cy + cb.r[p] * cb.sn[p];
+    const LocalBasis lb = bfs_basis((x - x0) / g.h, (y - y0) / g.h, g.h);
+    cb.basis.col(5 * p) = lb.v, cb.basis.col(5 * p + 1) = lb.dx, cb.basis.col(5 * p + 2) = lb.dy;
+    cb.basis.col(5 * p + 3) = lb.dxx, cb.basis.col(5 * p + 4) = lb.dyy;
+    cb.lap_phi.col(p) = lb.dxx + lb.dyy;
+    cb.load[p] = cb.wt[p] * f(x, y);
+  }
+  // D = F - I_h F at every point: first minus the interpolant's share, for all functions at once.
+  cb.D.noalias() = -cb.basis.transpose() * cb.Pl.leftCols(L);  // 5 rows per point, one column per function
+  cb.psi.resize(L, np), cb.lap_psi.resize(L, np);
+  for (int p = 0; p < np; ++p) {
+    const double r = cb.r[p], c = cb.cs[p], s = cb.sn[p], ir = 1 / r;
+    if (r > e.a) {
+      const Radial F = kink_radial(r - e.a, e.a);
+      for (int k = 0; k < cb.sp[p].count; ++k) add_profile(F, cb.sp[p].b[k], ir, c, s, &cb.D(5 * p, cb.idx[p][k]));
+    }
+    const Radial chi = cutoff(e, r - e.a);
+    for (int l = 0; l < L; ++l) {
+      const double* d = &cb.D(5 * p, l);
+      const Psi v = psi_from(KinkValue{d[0], d[1], d[2], d[3], 0.0, d[4]}, r, c, s, chi);
+      cb.psi(l, p) = v.v, cb.lap_psi(l, p) = v.lap;
+    }
+  }
+  cb.weighted.noalias() = cb.lap_psi * Eigen::Map<const VectorXd>(cb.wt.data(), np).asDiagonal();
+  Bl.noalias() = cb.lap_phi * cb.weighted.transpose();
+  El.noalias() = cb.weighted * cb.lap_psi.transpose();
+  fl.noalias() = cb.psi * cb.load;
+}
+
 // Eq. (D31)'s blocks, cell by cell over the cells that reach the band where chi is not 0, in polar coordinates
 // about the centre. The angle is split at the cell's corners, where the rim or either end of the
 // cut-off crosses a side, and at the splines' knots; on each piece the ray's part of the cell is a
@@ -288,6 +320,8 @@ KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const Sp
   out.load = VectorXd::Zero(e.size());
   std::vector<double> cuts;
   CellBlocks cb;
+  Eigen::MatrixXd Bl, El;
+  VectorXd fl;
   for (int ey = 0; ey < g.ny; ++ey)
     for (int ex = 0; ex < g.nx; ++ex) {
       const double x0 = ex * h, x1 = x0 + h, y0 = ey * h, y1 = y0 + h;
@@ -315,24 +349,26 @@ KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const Sp
           const double th = t0 + (t1 - t0) * qt.points[i];
           if (!ray_in_cell(e.cx, e.cy, th, x0, x1, y0, y1, r0, r1)) continue;
           const SplinesAt sp = splines_at(e, th < 0 ? th + 2 * M_PI : th);
-          int idx[4];
+          std::array<int, 4> idx{};
           for (int s = 0; s < sp.count; ++s) idx[s] = cb.local(e.function_of_spline[sp.j[s]]);
+          const double cs = std::cos(th), sn = std::sin(th);
           const double stops[5] = {r0, std::clamp(radii[0], r0, r1), std::clamp(radii[1], r0, r1), std::clamp(radii[2], r0, r1), r1};
           for (int piece = 0; piece < 3; ++piece)
             for (size_t k = 0; stops[piece + 1] > stops[piece] && k < qr.points.size(); ++k) {
               const double lo = stops[piece], hi = stops[piece + 1], r = lo + (hi - lo) * qr.points[k];
-              add_point(g, e, f, x0, y0, r, std::cos(th), std::sin(th), (t1 - t0) * qt.weights[i] * (hi - lo) * qr.weights[k] * r, sp,
-                        idx, cb);
+              cb.add(r, cs, sn, (t1 - t0) * qt.weights[i] * (hi - lo) * qr.weights[k] * r, sp);
+              cb.idx.back() = idx;
             }
         }
       }
+      cell_blocks(g, e, f, x0, y0, cb, Bl, El, fl);
       for (size_t k = 0; k < cb.met.size(); ++k) {
         const int col = N + cb.met[k];
         for (int i = 0; i < 16; ++i)
-          if (dofs[i] >= 0 && cb.Bl(i, k) != 0) t.emplace_back(dofs[i], col, cb.Bl(i, k)), t.emplace_back(col, dofs[i], cb.Bl(i, k));
+          if (dofs[i] >= 0 && Bl(i, k) != 0) t.emplace_back(dofs[i], col, Bl(i, k)), t.emplace_back(col, dofs[i], Bl(i, k));
         for (size_t l = 0; l < cb.met.size(); ++l)
-          if (cb.El(k, l) != 0) t.emplace_back(col, N + cb.met[l], cb.El(k, l));
-        out.load[cb.met[k]] += cb.fl[k];
+          if (El(k, l) != 0) t.emplace_back(col, N + cb.met[l], El(k, l));
+        out.load[cb.met[k]] += fl[k];
       }
     }
   out.border.resize(N + e.size(), N + e.size());
