@@ -93,6 +93,7 @@ Refinement refine(const Problem& p, const Cholesky& chol, const std::vector<int>
     const double first = sizes.w.empty() ? 0.0 : std::max(sizes.w[0], sizes.mu[0]);
     if (step == 1 && first >= kLargestCorrection && !(largest <= kContraction * first)) {
       undo();
+      sizes.undone = first;
       break;
     }
     if (!std::isfinite(largest)) break;

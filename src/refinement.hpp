@@ -30,6 +30,9 @@ VectorXd extended_gap(const Problem& p, const VectorXd& w, const std::vector<int
 // on any machine: the floor to which the refined answer is reproducible.
 struct Refinement {
   std::vector<double> w, mu;
+  // The first correction, when it was undone because the next did not confirm it (see refine): the
+  // answer then carries the double solve's round-off, which may be that large. 0 otherwise.
+  double undone = 0;
   double floor_w() const { return w.empty() ? NAN : w.back(); }
   double floor_mu() const { return mu.empty() ? NAN : mu.back(); }
   // What round-off can still change in the refined w (any entry) and, relatively, in the forces:

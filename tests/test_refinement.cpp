@@ -39,6 +39,7 @@ TEST(Refinement, KeepsALargeFirstCorrectionThatTheNextConfirms) {
   const VectorXd w = solve_refined(p, off, &record);
   ASSERT_FALSE(record.w.empty()) << "the refinement was refused";
   EXPECT_GE(record.w.front(), 1e-3);
+  EXPECT_EQ(record.undone, 0.0);
   EXPECT_LE(relative_difference(w, reference), 1e-13);
 }
 
@@ -53,5 +54,6 @@ TEST(Refinement, UndoesALargeFirstCorrectionThatTheNextDoesNotConfirm) {
   Refinement record;
   const VectorXd w = solve_refined(p, off, &record);
   EXPECT_TRUE(record.w.empty());
+  EXPECT_GE(record.undone, 1e-3);
   EXPECT_EQ(relative_difference(w, start), 0.0);
 }

@@ -521,6 +521,7 @@ plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::Vec
                                            " functions carrying the kink at the rim (D31)"
                                      : "Bogner-Fox-Schmit";
   r.report.refinement = exact.levels.back().refinement.w;
+  r.report.refinement_undone = exact.levels.back().refinement.undone;
   return result;
 }
 

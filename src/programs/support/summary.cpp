@@ -190,6 +190,7 @@ std::string summary_json(const Report& r) {
   j["error_bar_is"] = "continuum: the estimated distance of each value from the plate's own answer (h -> 0)";
   j["error_bars"] = error_bars_json(r);
   j["refinement"] = numbers(r.refinement);
+  j["refinement_undone"] = r.refinement_undone > 0 ? number(r.refinement_undone) : Json();
   j["contact_nodes"] = Json::array();
   for (int k : e.contact) j["contact_nodes"].push_back({number(f.x[k]), number(f.y[k])});
   if (r.lambda1h > 0)
@@ -256,6 +257,10 @@ std::string summary_text(const Report& r) {
       for (double c : r.refinement) o << " " << fmt("%.1e", c);
       o << "\n";
     }
+    if (r.refinement_undone > 0)
+      o << "WARNING: refinement undone: its first correction (" << fmt("%.1e", r.refinement_undone)
+        << " of the answer) was not confirmed by the next, so the answer carries the double solve's round-off, "
+           "which may be that large; the certificate bounds the residuals, not this\n";
   }
   if (!r.certificate)
     o << "error bound from the residual of (2a): max |w - w_eps| <= " << summary_value(s.bound.bound) << " (round-off floor "

@@ -41,6 +41,7 @@ struct Report {
   int model_unknowns = 0;             // its unknowns; 0: the whole grid's
   std::string space = "Bogner-Fox-Schmit";  // the finite-element space (with the enrichment D31, if any)
   std::vector<double> refinement;     // the exact solve's refinement steps, each correction's relative size
+  double refinement_undone = 0;       // its first correction, when the next did not confirm it (then undone)
   double dip_below_edge = NAN;        // max of phi - w along the edge curve (NaN: no edge)
   // The extremes of the finite-element fields over the plate and w_h at `points` (extrema.hpp), or
   // the series' peak and w at `points`, measured by the program before it reports; the nodal ones
