@@ -46,6 +46,7 @@ CheckValues solve_ours(const Scene& s, int n, const SamplingSpec& spec) {
   v.noise_w = roundoff.of(outputs);
   // A refined answer is the same on every machine to its last correction, far below the estimate
   // above for the unrefined solve (the same rule as the continuum study's).
+  require_not_undone(x.levels.back().refinement, "crosscheck");
   if (const Refinement& refined = x.levels.back().refinement; !refined.w.empty()) {
     for (double& noise : v.noise_w) noise = refined.noise_w(x.w);
     v.force_floor = refined.relative_noise_mu();

@@ -218,8 +218,8 @@ Psi psi_from(const KinkValue& D, double r, double cs, double sn, const Radial& c
 namespace {
 // One cell's quadrature points, gathered first, and the functions met in it with the interpolant's
 // coefficients on the cell (Pl) that each subtracts. The blocks are then formed by matrix products
-// over all the cell's points at once: point by point, as outer products, they cost three times as
-// much.
+// over all the cell's points at once: point by point, as outer products, the assembly took a third
+// longer (n = 64: 0.040 s against 0.031 s).
 struct CellBlocks {
   std::vector<int> met;
   Eigen::MatrixXd Pl;
@@ -245,11 +245,8 @@ struct CellBlocks {
     }
     return n - 1;
   }
-  void add(double radius, double c, double s, double weight, const SplinesAt& at) {
-    r.push_back(radius), cs.push_back(c), sn.push_back(s), wt.push_back(weight), sp.push_back(at);
-    std::array<int, 4> local_of{};
-    for (int k = 0; k < at.count; ++k) local_of[k] = -1;
-    idx.push_back(local_of);
+  void add(double radius, double c, double s, double weight, const SplinesAt& at, const std::array<int, 4>& local_of) {
+    r.push_back(radius), cs.push_back(c), sn.push_back(s), wt.push_back(weight), sp.push_back(at), idx.push_back(local_of);
   }
 };
 }  // namespace
@@ -356,8 +353,7 @@ KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const Sp
           for (int piece = 0; piece < 3; ++piece)
             for (size_t k = 0; stops[piece + 1] > stops[piece] && k < qr.points.size(); ++k) {
               const double lo = stops[piece], hi = stops[piece + 1], r = lo + (hi - lo) * qr.points[k];
-              cb.add(r, cs, sn, (t1 - t0) * qt.weights[i] * (hi - lo) * qr.weights[k] * r, sp);
-              cb.idx.back() = idx;
+              cb.add(r, cs, sn, (t1 - t0) * qt.weights[i] * (hi - lo) * qr.weights[k] * r, sp, idx);
             }
         }
       }

@@ -2,6 +2,8 @@
 #include "refinement.hpp"
 
 #include <cfloat>
+#include <sstream>
+#include <stdexcept>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -50,11 +52,6 @@ VectorXd extended_gap(const Problem& p, const VectorXd& w, const std::vector<int
   return gap;
 }
 
-// A first correction of this size or more (relative) is either the double solve's own round-off on
-// an ill-conditioned grid, or noise that a near-singular block G_AA amplifies; the next correction
-// tells them apart: it must be at most kContraction times the first, which noise never is.
-constexpr double kLargestCorrection = 1e-3, kContraction = 0.1;
-
 // @region refinement
 // Eq. (D22): with the residuals in long double (D21), the double factor of K and a factor of G_AA,
 //   z = K^{-1} r_w,   G_AA dmu = r_A - S_A z,   dw = z + K^{-1} S_A^T dmu.
@@ -83,29 +80,42 @@ Refinement refine(const Problem& p, const Cholesky& chol, const std::vector<int>
     }
     const double size = dw.lpNorm<Eigen::Infinity>() / std::max(w.lpNorm<Eigen::Infinity>(), 1e-300);
     const double size_mu = m > 0 ? dmu.lpNorm<Eigen::Infinity>() / std::max(mu.lpNorm<Eigen::Infinity>(), 1e-300) : 0.0;
-    const bool shrinking = sizes.w.empty() || size < sizes.w.back();
-    // A large first correction that the second does not confirm is undone, and so is anything not
-    // finite: an empty record means "not refined", and callers then fall back to the unrefined
-    // solve's round-off estimate instead of reading a floor from noise. On the 2 x 1 plate at
-    // h = 1/1024 the first correction is 6e-3 and the second 3e-8: refusing the first by its size
-    // alone left max w 2e-6 and the force 2e-5 off, under a certificate of 1e-15.
     const double largest = std::max(size, size_mu);
     const double first = sizes.w.empty() ? 0.0 : std::max(sizes.w[0], sizes.mu[0]);
-    if (step == 1 && first >= kLargestCorrection && !(largest <= kContraction * first)) {
+    const bool confirming = step == 1 && first >= kRefineLargestFirst;
+    // A first correction of kRefineLargestFirst or more is the double solve's own round-off on an
+    // ill-conditioned grid, or noise that a near-singular G_AA amplifies; only the second tells
+    // them apart, and if it does not confirm the first, the whole refinement is undone (an empty
+    // record: callers fall back to the unrefined solve's round-off, and `undone` says why). On the
+    // 2 x 1 plate at h = 1/1024 the first correction is 6e-3 and the second 3e-8: refusing the first
+    // by its size alone left max w 2e-6 and the force 2e-5 off, under a certificate of 1e-15.
+    if (confirming && !(largest <= kRefineContraction * first)) {
       undo();
       sizes.undone = first;
       break;
     }
-    if (!std::isfinite(largest)) break;
+    // Past that, a correction of kRefineLargestFirst or more (or not finite) is noise, not round-off
+    // being removed: it is not applied, and the steps before it stand.
+    if (!std::isfinite(largest) || (step > 0 && !confirming && largest >= kRefineLargestFirst)) break;
     sizes.w.push_back(size), sizes.mu.push_back(size_mu);
-    if (!shrinking) break;  // the residual's own round-off: this correction is noise, not applied
+    if (!(sizes.w.size() == 1 || size < sizes.w[sizes.w.size() - 2])) break;  // the residual's own round-off: not applied
     w += dw;
     if (m > 0) mu += dmu;
-    if (size <= 4 * DBL_EPSILON) break;
+    // Done when w's correction is down to round-off; not after a first correction still to be confirmed.
+    if (size <= 4 * DBL_EPSILON && !(step == 0 && largest >= kRefineLargestFirst)) break;
   }
   return sizes;
 }
 // @end refinement
+
+void require_not_undone(const Refinement& r, const std::string& what) {
+  if (r.undone > 0) {
+    std::ostringstream m;
+    m << what << ": the refinement (D22) was undone (its first correction, " << r.undone
+      << " of the answer, was not confirmed by the next), so the answer's round-off is unknown";
+    throw std::runtime_error(m.str());
+  }
+}
 
 VectorXd solve_refined(const Problem& p, const Cholesky& chol, Refinement* record) {
   VectorXd w = chol.solve(p.F), none;

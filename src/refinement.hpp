@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "cholesky.hpp"
@@ -44,12 +45,22 @@ struct Refinement {
   double relative_noise_mu() const { return std::max(floor_mu(), 4 * DBL_EPSILON); }
 };
 
+// A first correction (relative) of kRefineLargestFirst or more stands only if the second is at most
+// kRefineContraction times it: round-off being removed shrinks that fast; noise amplified by a
+// near-singular block does not (a factor of 4K, in tests/test_refinement.cpp, shrinks by 3/4).
+constexpr double kRefineLargestFirst = 1e-3, kRefineContraction = 0.1;
+
 // Eq. (D22): refines w and the forces mu on the rows `rows` (those that push; G_AA their block of
 // G = S K^{-1} S^T) so that K w - S_A^T mu = F and S_A w = phi_A hold to the residual's precision.
 // `chol` holds K's factor. Stops when a correction is down to a few units of round-off of w, or
-// stops shrinking.
+// stops shrinking, or is as large as kRefineLargestFirst after the first; undoes everything (and
+// records `undone`) when the second does not confirm a large first.
 Refinement refine(const Problem& p, const Cholesky& chol, const std::vector<int>& rows, const Eigen::MatrixXd& G_AA,
                   VectorXd& mu, VectorXd& w);
+
+// Throws std::runtime_error naming `what` if r was undone: the answer's round-off is then unknown,
+// and a study that prints digits to its estimate must not print them.
+void require_not_undone(const Refinement& r, const std::string& what);
 
 // The plate with no constraint, K w = F, refined: eq. (D22) with no rows.
 VectorXd solve_refined(const Problem& p, const Cholesky& chol, Refinement* record = nullptr);

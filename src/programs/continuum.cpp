@@ -101,6 +101,7 @@ Row solve_one(const Variant& v, int n, const Scene& scene) {
   row.seconds = seconds_since(t0);
 
   const Refinement& refined = x.result.levels.back().refinement;
+  require_not_undone(refined, "continuum");
   if (!refined.w.empty()) {
     // A refined answer (D22) is the same on every machine to the refinement's floor, in w and in the
     // forces alike: the corrections' size once they stop shrinking.

@@ -90,6 +90,7 @@ Run solve(const Case& s, const Rows& r, int n) {
   for (const ExactLevel& l : x.result.levels) run.exchanged += l.exchanged;
   // A refined answer (D22) is the same on every machine to the refinement's floor; else u n^3.
   const Refinement& refined = x.result.levels.back().refinement;
+  require_not_undone(refined, "liftoff");
   run.noise_w = refined.w.empty() ? exact_solve_roundoff(n, run.max_w) : refined.noise_w(x.result.w.head(x.whole().grid.unknowns()));
   run.noise_force = refined.w.empty() ? exact_solve_roundoff(n, run.force) : refined.relative_noise_mu() * run.force;
   return run;

@@ -23,6 +23,7 @@
 #include "dual_active_set.hpp"
 #include "published.hpp"
 #include "rim_contact.hpp"
+#include "refinement.hpp"
 #include "richardson.hpp"
 
 using namespace plate;
@@ -499,6 +500,8 @@ void model_numbers(Numbers& num) {
   num.put("model.kink_radius_cells", fmt("%g", kKinkMinRadiusCells), "src/kink_enrichment.hpp kKinkMinRadiusCells");
   num.put("model.kink_knot_cells", fmt("%g", kKinkKnotCells), "src/kink_enrichment.hpp kKinkKnotCells");
   num.put("model.kink_gauss_points", count(kKinkGaussPoints), "src/kink_enrichment.hpp kKinkGaussPoints");
+  num.put("model.refine_largest_first", fmt("%g", kRefineLargestFirst), "src/refinement.hpp kRefineLargestFirst");
+  num.put("model.refine_contraction", fmt("%g", kRefineContraction), "src/refinement.hpp kRefineContraction");
 }
 
 // One run of the linear scheme (results/linear_history.csv): after its first step, how the true
