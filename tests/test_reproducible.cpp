@@ -87,6 +87,27 @@ TEST(Reproducible, IterationTables) {
   expect_reproducible("table", "--fine 16", {{"table.csv"}, {"table.md"}, {"table_fine.csv", 6}});
 }
 
+// make all runs the paper's table and the finer grids as two steps (--which): each writes its own
+// files only, the same numbers as together, and the finer grids may include the paper's h = 1/4.
+TEST(Reproducible, EachIterationTableIsWrittenApart) {
+  const Scratch scratch("table_which");
+  run_as(kMachines[0], "table", "--which paper", scratch.dir() / "paper");
+  run_as(kMachines[0], "table", "--which fine --fine 8", scratch.dir() / "fine");
+  run_as(kMachines[0], "table", "--which fine --fine 4", scratch.dir() / "fine4");
+  if (::testing::Test::HasFatalFailure()) return;
+  EXPECT_FALSE(fs::exists(scratch.dir() / "paper" / "table_fine.csv"));
+  EXPECT_FALSE(fs::exists(scratch.dir() / "fine" / "table.csv"));
+  expect_agree(std::string(PLATE_SOURCE_DIR "/results/table.csv"), (scratch.dir() / "paper" / "table.csv").string(), {"table.csv"},
+               "--which paper");
+  expect_agree(std::string(PLATE_SOURCE_DIR "/results/table_fine.csv"), (scratch.dir() / "fine" / "table_fine.csv").string(),
+               {"table_fine.csv", 6}, "--which fine");
+  // h = 1/4 among the finer grids: its rows are the paper table's, in table_fine.csv.
+  std::ifstream in(scratch.dir() / "fine4" / "table_fine.csv");
+  int rows_at_4 = 0;
+  for (std::string line; std::getline(in, line);) rows_at_4 += line.rfind("4,", 0) == 0;
+  EXPECT_GT(rows_at_4, 0);
+}
+
 TEST(Reproducible, ContinuumTablesOnTheCoarseGrids) {
   expect_reproducible("continuum", "--coarsest 8 --finest 64", {{"continuum.csv", 2}});
 }

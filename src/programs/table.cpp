@@ -173,11 +173,12 @@ int main(int argc, char** argv) {
     const auto numbers = read_paper_numbers(reference + "/paper_numbers.csv");
     const Scene scene = paper_scene();
     const int n_paper = paper_cells();
-    std::vector<int> grids;
-    if (which != "fine") grids.push_back(n_paper);
-    if (which != "paper") grids.insert(grids.end(), fine.begin(), fine.end());
+    std::vector<std::pair<int, bool>> grids;  // n, and whether it is the paper's table
+    if (which != "fine") grids.emplace_back(n_paper, true);
+    if (which != "paper")
+      for (int n : fine) grids.emplace_back(n, false);
     std::vector<Case> paper_cases, fine_cases;
-    for (int n : grids)
+    for (const auto& [n, paper] : grids)
       for (SamplingKind kind : {SamplingKind::Gauss, SamplingKind::Nodes}) {
         std::cerr << "table: h = 1/" << n << ", " << to_string(kind) << " sampling\n";
         const Problem p = make_problem(scene, make_grid(n), SamplingSpec{kind});
@@ -185,7 +186,7 @@ int main(int argc, char** argv) {
         for (const auto& row : table)
           c.runs.emplace_back(run(p, Scheme::Linear, row.tolerance, c.limit, c.lambda1h),
                               run(p, Scheme::Nonlinear, row.tolerance, c.limit, c.lambda1h));
-        (n == n_paper ? paper_cases : fine_cases).push_back(std::move(c));
+        (paper ? paper_cases : fine_cases).push_back(std::move(c));
       }
     std::filesystem::create_directories(out);
     const std::string head =
