@@ -223,15 +223,21 @@ namespace {
 struct CellBlocks {
   std::vector<int> met;
   Eigen::MatrixXd Pl;
-  std::vector<double> r, cs, sn, wt;  // each point: radius, the ray's cosine and sine, weight
-  std::vector<SplinesAt> sp;          // the splines there, and the local index of each one's function
-  std::vector<std::array<int, 4>> idx;
+  // Each ray: its cosine and sine, the splines there and the local index of each one's function.
+  struct Ray {
+    double cs, sn;
+    SplinesAt sp;
+    std::array<int, 4> idx;
+  };
+  std::vector<Ray> rays;
+  std::vector<double> r, wt;  // each point: radius and weight
+  std::vector<int> ray;       // and the ray it lies on
   // Kept from cell to cell, so that no point allocates.
   Eigen::MatrixXd basis, lap_phi, D, psi, lap_psi, weighted;
   VectorXd load;
   void reset() {
     met.clear(), Pl.setZero(16, 8);
-    r.clear(), cs.clear(), sn.clear(), wt.clear(), sp.clear(), idx.clear();
+    rays.clear(), r.clear(), wt.clear(), ray.clear();
   }
   int local(int k) {
     for (size_t i = 0; i < met.size(); ++i)
@@ -245,9 +251,7 @@ struct CellBlocks {
     }
     return n - 1;
   }
-  void add(double radius, double c, double s, double weight, const SplinesAt& at, const std::array<int, 4>& local_of) {
-    r.push_back(radius), cs.push_back(c), sn.push_back(s), wt.push_back(weight), sp.push_back(at), idx.push_back(local_of);
-  }
+  void add(double radius, double weight) { r.push_back(radius), wt.push_back(weight), ray.push_back(static_cast<int>(rays.size()) - 1); }
 };
 }  // namespace
 
@@ -271,7 +275,8 @@ static void cell_blocks(const Grid& g, const KinkEnrichment& e, const Field& f, 
   const int np = static_cast<int>(cb.r.size()), L = static_cast<int>(cb.met.size());
   cb.basis.resize(16, 5 * np), cb.lap_phi.resize(16, np), cb.load.resize(np);
   for (int p = 0; p < np; ++p) {
-    const double x = e.cx + cb.r[p] * cb.cs[p], y = e.cy + cb.r[p] * cb.sn[p];
+    const CellBlocks::Ray& ray = cb.rays[cb.ray[p]];
+    const double x = e.cx + cb.r[p] * ray.cs, y = e.cy + cb.r[p] * ray.sn;
     const LocalBasis lb = bfs_basis((x - x0) / g.h, (y - y0) / g.h, g.h);
     cb.basis.col(5 * p) = lb.v, cb.basis.col(5 * p + 1) = lb.dx, cb.basis.col(5 * p + 2) = lb.dy;
     cb.basis.col(5 * p + 3) = lb.dxx, cb.basis.col(5 * p + 4) = lb.dyy;
@@ -282,10 +287,11 @@ static void cell_blocks(const Grid& g, const KinkEnrichment& e, const Field& f, 
   cb.D.noalias() = -cb.basis.transpose() * cb.Pl.leftCols(L);  // 5 rows per point, one column per function
   cb.psi.resize(L, np), cb.lap_psi.resize(L, np);
   for (int p = 0; p < np; ++p) {
-    const double r = cb.r[p], c = cb.cs[p], s = cb.sn[p], ir = 1 / r;
+    const CellBlocks::Ray& ray = cb.rays[cb.ray[p]];
+    const double r = cb.r[p], c = ray.cs, s = ray.sn, ir = 1 / r;
     if (r > e.a) {
       const Radial F = kink_radial(r - e.a, e.a);
-      for (int k = 0; k < cb.sp[p].count; ++k) add_profile(F, cb.sp[p].b[k], ir, c, s, &cb.D(5 * p, cb.idx[p][k]));
+      for (int k = 0; k < ray.sp.count; ++k) add_profile(F, ray.sp.b[k], ir, c, s, &cb.D(5 * p, ray.idx[k]));
     }
     const Radial chi = cutoff(e, r - e.a);
     for (int l = 0; l < L; ++l) {
@@ -345,15 +351,13 @@ KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const Sp
         for (size_t i = 0; i < qt.points.size(); ++i) {
           const double th = t0 + (t1 - t0) * qt.points[i];
           if (!ray_in_cell(e.cx, e.cy, th, x0, x1, y0, y1, r0, r1)) continue;
-          const SplinesAt sp = splines_at(e, th < 0 ? th + 2 * M_PI : th);
-          std::array<int, 4> idx{};
-          for (int s = 0; s < sp.count; ++s) idx[s] = cb.local(e.function_of_spline[sp.j[s]]);
-          const double cs = std::cos(th), sn = std::sin(th);
+          CellBlocks::Ray& ray = cb.rays.emplace_back(CellBlocks::Ray{std::cos(th), std::sin(th), splines_at(e, th < 0 ? th + 2 * M_PI : th), {}});
+          for (int s = 0; s < ray.sp.count; ++s) ray.idx[s] = cb.local(e.function_of_spline[ray.sp.j[s]]);
           const double stops[5] = {r0, std::clamp(radii[0], r0, r1), std::clamp(radii[1], r0, r1), std::clamp(radii[2], r0, r1), r1};
           for (int piece = 0; piece < 3; ++piece)
             for (size_t k = 0; stops[piece + 1] > stops[piece] && k < qr.points.size(); ++k) {
               const double lo = stops[piece], hi = stops[piece + 1], r = lo + (hi - lo) * qr.points[k];
-              cb.add(r, cs, sn, (t1 - t0) * qt.weights[i] * (hi - lo) * qr.weights[k] * r, sp, idx);
+              cb.add(r, (t1 - t0) * qt.weights[i] * (hi - lo) * qr.weights[k] * r);
             }
         }
       }

@@ -80,6 +80,7 @@ Refinement refine(const Problem& p, const Cholesky& chol, const std::vector<int>
     }
     const double size = dw.lpNorm<Eigen::Infinity>() / std::max(w.lpNorm<Eigen::Infinity>(), 1e-300);
     const double size_mu = m > 0 ? dmu.lpNorm<Eigen::Infinity>() / std::max(mu.lpNorm<Eigen::Infinity>(), 1e-300) : 0.0;
+    const bool shrinking = sizes.w.empty() || size < sizes.w.back();
     const double largest = std::max(size, size_mu);
     const double first = sizes.w.empty() ? 0.0 : std::max(sizes.w[0], sizes.mu[0]);
     const bool confirming = step == 1 && first >= kRefineLargestFirst;
@@ -98,7 +99,7 @@ Refinement refine(const Problem& p, const Cholesky& chol, const std::vector<int>
     // being removed: it is not applied, and the steps before it stand.
     if (!std::isfinite(largest) || (step > 0 && !confirming && largest >= kRefineLargestFirst)) break;
     sizes.w.push_back(size), sizes.mu.push_back(size_mu);
-    if (!(sizes.w.size() == 1 || size < sizes.w[sizes.w.size() - 2])) break;  // the residual's own round-off: not applied
+    if (!shrinking) break;  // the residual's own round-off: this correction is noise, not applied
     w += dw;
     if (m > 0) mu += dmu;
     // Done when w's correction is down to round-off; not after a first correction still to be confirmed.

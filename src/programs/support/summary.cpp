@@ -190,7 +190,7 @@ std::string summary_json(const Report& r) {
   j["error_bar_is"] = "continuum: the estimated distance of each value from the plate's own answer (h -> 0)";
   j["error_bars"] = error_bars_json(r);
   j["refinement"] = numbers(r.refinement);
-  j["refinement_undone"] = r.refinement_undone > 0 ? number(r.refinement_undone) : Json();
+  j["refinement_undone"] = r.refinement_undone > 0 ? number(r.refinement_undone) : nullptr;
   j["contact_nodes"] = Json::array();
   for (int k : e.contact) j["contact_nodes"].push_back({number(f.x[k]), number(f.y[k])});
   if (r.lambda1h > 0)
