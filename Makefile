@@ -47,16 +47,20 @@ PAPER_INPUTS := paper/paper.md paper/style.css paper/print.html $(wildcard paper
 VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread libmuparser-dev libcli11-dev freefem++ gmsh \
              libpetsc-real-dev libmumps-dev pandoc gnuplot-nox g++ cmake libgtest-dev libbenchmark-dev
 
-# Every program make runs gets one thread and an allocator that keeps what it frees. Measured here
-# (2 cores) on `plate -n 512 --sampling nodes --symmetry none`: 22.4 s wall with 19.1 s of system
-# time as shipped, 16.0 s wall with 3.1 s with these three. CHOLMOD asks OpenMP for 4 threads
-# whatever the machine has, OpenBLAS starts one per core, and on our blocks they mostly wait on each
-# other in the kernel; glibc hands large freed blocks back and faults them in again page by page,
-# where huge pages and a kept heap fault a few thousand times instead of two million. Set any of
-# them on the command line to override; `make check-results` compares the tables made with them.
+# Every program make runs gets one thread and an allocator that keeps what it frees. On this kind
+# of machine (a virtual one whose balloon hands pages freed for about a second back to the host)
+# the first write to a page costs about 5 us of system time, 1.4 s a GiB, and a page written before
+# in the same process costs nothing: so glibc keeps every block it frees in its heap for the next
+# one (mmap_max=0, trim_threshold) instead of unmapping it. Huge pages, which an earlier round asked
+# for (hugetlb=1), came back from the host slower still (0.5 to 3 GB/s against 2.7 on first write).
+# Measured here (2 cores), the system time of `plate -n 512 --sampling nodes --symmetry none`:
+# 5.0 to 8.3 s with huge pages, 4.6 to 5.3 s with these; of `continuum`: 5.3 s, 1.0 s. CHOLMOD asks
+# OpenMP for 4 threads whatever the machine has, and OpenBLAS starts one per core: on our blocks
+# they mostly wait on each other in the kernel. Set any of them on the command line to override;
+# `make check-results` compares the tables made with them.
 export OMP_THREAD_LIMIT ?= 1
 export OPENBLAS_NUM_THREADS ?= 1
-export GLIBC_TUNABLES ?= glibc.malloc.hugetlb=1:glibc.malloc.mmap_threshold=33554432:glibc.malloc.trim_threshold=4294967295
+export GLIBC_TUNABLES ?= glibc.malloc.mmap_max=0:glibc.malloc.trim_threshold=4294967295
 
 # What each step makes and about how long it takes here (2 cores), said before it starts;
 # scripts/step.sh also says, when it ends, how long it took (and logs it to build/step-times.log).
