@@ -1,0 +1,66 @@
+// src/openmp_one_thread.cpp: a region that runs on one thread is a plain call on the calling thread;
+// any other goes to libgomp. Both halves are asserted, whatever OMP_THREAD_LIMIT the test runs under.
+#include <dlfcn.h>
+#include <gtest/gtest.h>
+#include <pthread.h>
+
+#include <atomic>
+
+#include "cholesky.hpp"
+
+extern "C" void GOMP_parallel(void (*fn)(void*), void* data, unsigned num_threads, unsigned flags);
+
+namespace {
+// libgomp's own queries, found at run time as the interposer finds them (the tests do not link
+// libgomp themselves: CHOLMOD does).
+int omp(const char* name) {
+  void* f = dlsym(RTLD_DEFAULT, name);
+  if (!f) throw std::runtime_error(std::string("libgomp is not loaded: no ") + name);
+  return reinterpret_cast<int (*)()>(f)();
+}
+
+struct Seen {
+  pthread_t caller{};
+  std::atomic<int> calls{0};
+  std::atomic<int> on_caller{0};
+  std::atomic<int> level{-1};
+  std::atomic<int> team{-1};
+};
+
+void region(void* data) {
+  auto& seen = *static_cast<Seen*>(data);
+  seen.calls++;
+  if (pthread_equal(pthread_self(), seen.caller)) seen.on_caller++;
+  seen.level = omp("omp_get_level");
+  seen.team = omp("omp_get_num_threads");
+}
+}  // namespace
+
+// What CHOLMOD's `if` clauses ask for on small supernodes: no team is formed (level 0), the body
+// runs once on the calling thread and sees a team of one, as it would in libgomp's team of one.
+TEST(OpenMpOneThread, AOneThreadRegionIsAPlainCallOnTheCallingThread) {
+  plate::Cholesky links_the_interposer;  // as every program that factorises does
+  Seen seen;
+  seen.caller = pthread_self();
+  GOMP_parallel(region, &seen, 1, 0);
+  EXPECT_EQ(seen.calls, 1);
+  EXPECT_EQ(seen.on_caller, 1);
+  EXPECT_EQ(seen.level, 0);
+  EXPECT_EQ(seen.team, 1);
+}
+
+// Two threads asked for: libgomp forms the team (level 1, two calls) unless the thread limit is one,
+// where it too would run one thread, and the call is plain.
+TEST(OpenMpOneThread, ARegionOfTwoGoesToLibgompUnlessTheLimitIsOne) {
+  Seen seen;
+  seen.caller = pthread_self();
+  GOMP_parallel(region, &seen, 2, 0);
+  if (omp("omp_get_thread_limit") >= 2) {
+    EXPECT_EQ(seen.calls, 2);
+    EXPECT_EQ(seen.level, 1);
+    EXPECT_EQ(seen.team, 2);
+  } else {
+    EXPECT_EQ(seen.calls, 1);
+    EXPECT_EQ(seen.level, 0);
+  }
+}
