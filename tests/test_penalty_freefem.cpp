@@ -66,7 +66,7 @@ TEST(PenaltyFreeFem, RefusesBadArgumentsNamingThem) {
       {"-tol nan", "-tol"},          {"-tol -1", "-tol"},           {"-eps 0", "-eps"},
       {"-eps-min 1", "-eps-min"},    {"-scheme newton", "-scheme"}, {"-sampling edges", "-sampling"},
       {"-maxit 0", "-maxit"},        {"-nu 0.5", "-nu"},            {"-R inf", "-R"},
-      {"-r nan", "-r"},              {"-continuation 2", "-continuation"},
+      {"-r nan", "-r"},              {"-continuation 3", "-continuation"},
       {"-eigen yes", "-eigen"},      {"-unknown 1", "-unknown"},    {"-tol", "-tol"},
   };
   for (const auto& c : cases) {
@@ -113,6 +113,30 @@ TEST(PenaltyFreeFem, TendsToTheExactScriptsAnswerAtTheRateEps) {
     EXPECT_NEAR(df[k] / df[k + 1], 10, 1) << "force, step " << k;
   }
   EXPECT_LT(dw.back(), 1e-4 * w0);
+}
+
+// -continuation 2 reaches one eps by the levels eps, eps / 100, ..., eps-min, each started from
+// the one before: the same discrete solution as a start from w = 0 (unique: (2a)'s energy is
+// strictly convex), its last level eps-min, and that level starts close, so it takes fewer
+// iterations than the cold start does.
+TEST(PenaltyFreeFem, ThePathToOneEpsEndsAtTheColdStartsSolution) {
+  const PenaltyRun cold = penalty(1, "-scheme nonlinear -continuation 0 -eps 1e-10 -eps-min 1e-10 -tol 1e-13");
+  const PenaltyRun path = penalty(1, "-scheme nonlinear -continuation 2 -eps 1e-6 -eps-min 1e-10 -tol 1e-13");
+  ASSERT_TRUE(cold.converged && path.converged) << cold.why << path.why;
+  ASSERT_EQ(path.levels.size(), 3u);
+  EXPECT_DOUBLE_EQ(path.levels[0].eps, 1e-6);
+  EXPECT_DOUBLE_EQ(path.levels[1].eps, 1e-8);
+  EXPECT_DOUBLE_EQ(path.levels[2].eps, 1e-10);
+  EXPECT_DOUBLE_EQ(path.eps, 1e-10);
+  EXPECT_LT(path.levels[2].iterations, cold.iterations);
+  EXPECT_NEAR(path.max_w, cold.max_w, 2 * (cold.max_w_roundoff + path.max_w_roundoff));
+  EXPECT_NEAR(path.force, cold.force, 2 * (cold.force_roundoff + path.force_roundoff));
+  for (size_t k = 0; k < cold.w_at.size(); ++k) EXPECT_NEAR(path.w_at[k], cold.w_at[k], 1e-11) << k;
+  // A path whose last level would not be eps-min is no path: 1e-6 / 100^k never lands on 3e-9, so
+  // the last level is cut to it.
+  const PenaltyRun odd = penalty(1, "-scheme nonlinear -continuation 2 -eps 1e-6 -eps-min 3e-9 -tol 1e-13");
+  ASSERT_TRUE(odd.converged) << odd.why;
+  EXPECT_DOUBLE_EQ(odd.levels.back().eps, 3e-9);
 }
 
 // (3a) and (5a) solve the same discrete problem (2a): at one eps, stopped far below the difference
