@@ -3,8 +3,11 @@
 // barrier with a futex call when the region ends: about a million system calls for the rim series,
 // 2 s of system time (issue 44). A region that will run on one thread is run here as a plain call,
 // which is what a team of one does (omp_get_thread_num() = 0, omp_get_num_threads() = 1; loops and
-// barriers inside an orphaned region run on the calling thread). Every other region goes to libgomp
-// unchanged, so OMP_NUM_THREADS and OMP_THREAD_LIMIT keep their meaning.
+// barriers inside an orphaned region run on the calling thread). Only a region opened outside every
+// other is run so: inside a team, even one of one thread, libgomp keeps the outer team's state apart
+// from the inner one's, and a plain call would not. Every other region goes to libgomp unchanged, so
+// OMP_NUM_THREADS and OMP_THREAD_LIMIT keep their meaning (but for a list such as OMP_NUM_THREADS=1,4,
+// whose second entry a plain call leaves unused: CHOLMOD opens no region inside another).
 //
 // This definition in the executable takes the place of libgomp's for the shared libraries it loads
 // (ELF symbol interposition); libgomp's own is found with dlsym(RTLD_NEXT).
@@ -38,10 +41,10 @@ extern "C" void GOMP_parallel(Region fn, void* data, unsigned num_threads, unsig
   static const Parallel real = libgomp<Parallel>("GOMP_parallel", RTLD_NEXT);
   static const Count thread_limit = libgomp<Count>("omp_get_thread_limit", RTLD_DEFAULT);
   static const Count max_threads = libgomp<Count>("omp_get_max_threads", RTLD_DEFAULT);
-  static const Count in_parallel = libgomp<Count>("omp_in_parallel", RTLD_DEFAULT);
+  static const Count level = libgomp<Count>("omp_get_level", RTLD_DEFAULT);
   // num_threads is 1 when the region's `if` clause is false; 0 means "as many as the runtime gives".
   const bool one = num_threads == 1 || thread_limit() == 1 || (num_threads == 0 && max_threads() == 1);
-  if (one && !in_parallel()) {
+  if (one && level() == 0) {
     fn(data);
     return;
   }

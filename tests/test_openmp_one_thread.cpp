@@ -40,6 +40,9 @@ void region(void* data) {
 // runs once on the calling thread and sees a team of one, as it would in libgomp's team of one.
 TEST(OpenMpOneThread, AOneThreadRegionIsAPlainCallOnTheCallingThread) {
   plate::Cholesky links_the_interposer;  // as every program that factorises does
+  // CHOLMOD's calls reach it only if the executable exports it: the dynamic linker must find this
+  // definition, not libgomp's.
+  EXPECT_EQ(dlsym(RTLD_DEFAULT, "GOMP_parallel"), reinterpret_cast<void*>(&GOMP_parallel));
   Seen seen;
   seen.caller = pthread_self();
   GOMP_parallel(region, &seen, 1, 0);
@@ -63,4 +66,24 @@ TEST(OpenMpOneThread, ARegionOfTwoGoesToLibgompUnlessTheLimitIsOne) {
     EXPECT_EQ(seen.calls, 1);
     EXPECT_EQ(seen.level, 0);
   }
+}
+
+namespace {
+void inner(void* data) {
+  auto& seen = *static_cast<Seen*>(data);
+  seen.level = omp("omp_get_level");  // 2 in libgomp's team inside the outer one, 1 as a plain call
+}
+void outer(void* data) { GOMP_parallel(inner, data, 1, 0); }
+}  // namespace
+
+// A region inside another, even inside a team of one thread (which omp_in_parallel() calls not
+// parallel), is libgomp's: a plain call there would share the outer team's work shares and barriers.
+TEST(OpenMpOneThread, ARegionInsideATeamOfOneGoesToLibgomp) {
+  using Parallel = void (*)(void (*)(void*), void*, unsigned, unsigned);
+  const auto libgomps = reinterpret_cast<Parallel>(dlsym(RTLD_NEXT, "GOMP_parallel"));
+  ASSERT_NE(libgomps, nullptr);
+  ASSERT_NE(reinterpret_cast<void*>(libgomps), reinterpret_cast<void*>(&GOMP_parallel));
+  Seen seen;
+  libgomps(outer, &seen, 1, 0);  // libgomp's own team of one: level 1
+  EXPECT_EQ(seen.level, 2);
 }
