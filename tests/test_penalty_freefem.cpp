@@ -136,7 +136,9 @@ TEST(PenaltyFreeFem, ThePathToOneEpsEndsAtTheColdStartsSolution) {
   // the last level is cut to it.
   const PenaltyRun odd = penalty(1, "-scheme nonlinear -continuation 2 -eps 1e-6 -eps-min 3e-9 -tol 1e-13");
   ASSERT_TRUE(odd.converged) << odd.why;
-  EXPECT_DOUBLE_EQ(odd.levels.back().eps, 3e-9);
+  ASSERT_EQ(odd.levels.size(), 3u);
+  EXPECT_DOUBLE_EQ(odd.levels[1].eps, 1e-8);
+  EXPECT_DOUBLE_EQ(odd.levels[2].eps, 3e-9);
 }
 
 // (3a) and (5a) solve the same discrete problem (2a): at one eps, stopped far below the difference

@@ -169,11 +169,10 @@ std::string eps_arg(double eps) {
   return a.str();
 }
 
-// FreeFEM's way to the solution at one eps by (3a). From w = 0 its iterations grow as eps falls (on
-// the 32-cell quarter mesh: 8 at 1e-6, 21 at 1e-8, 64 at 1e-10), so a small eps is reached by
-// the levels 1e-6, 1e-8, ..., eps, each started from the one before (penalty_hct.edp -continuation
-// 2: 8 + 8 + 7 iterations to 1e-10, the same max w and force to 13 digits). An eps from which no
-// such level lies a hundredfold above it is solved from w = 0, as before.
+// FreeFEM's way to the solution at one eps by (3a). From w = 0 its iterations grow as eps falls, so
+// an eps of 1e-8 or less (kPathFrom / 100) is reached by the levels 1e-6, 1e-8, ..., eps, each
+// started from the one before (penalty_hct.edp -continuation 2, whose header gives the counts); a
+// larger eps is solved from w = 0. The answer is the same discrete solution either way.
 constexpr double kPathFrom = 1e-6;
 std::string one_eps(double eps) {
   if (eps > kPathFrom / 100 * (1 + 1e-12)) return " -continuation 0" + eps_arg(eps);
@@ -340,7 +339,7 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
   const Scene ours = at_height(sc, sc.cylinder->height * (1 + s.perturb));
   // FreeFEM's runs (index k L + j: eps k, mesh j) and ours (-1: each grid's path of w_eps through
   // the eps values, once) on s.jobs threads, the costliest first so that no long run starts last:
-  // FreeFEM's finest mesh from the smallest eps up (the slowest a minute and a half here), then ours
+  // FreeFEM's finest mesh from the smallest eps up (the slowest about half a minute here), then ours
   // (about a minute), then the coarser meshes. A value's round-off: the floor of Newton's
   // corrections (1e-12 of w, penalty_integral.cpp), and through the penalty eps^-1 times that over
   // the band where it acts.
