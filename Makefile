@@ -47,18 +47,20 @@ PAPER_INPUTS := paper/paper.md paper/style.css paper/print.html $(wildcard paper
 VERSIONED := libeigen3-dev libsuitesparse-dev libopenblas0-pthread libmuparser-dev libcli11-dev freefem++ gmsh \
              libpetsc-real-dev libmumps-dev pandoc gnuplot-nox g++ cmake libgtest-dev libbenchmark-dev
 
-# Every program make runs gets one thread and an allocator that keeps what it frees. On this
-# virtual machine the first write to a page of a process's memory costs about 5 us of system time
+# Every program make runs gets one thread and an allocator that keeps what it frees. On this virtual
+# machine the first write to a page of a process's memory costs about 5 us of system time
 # (plate -n 512 --sampling nodes --symmetry none: 4.6 s for 890 000 faults, 1.4 s a GiB), a page
 # written before in the same process nothing; it looks as if the host takes back what the guest has
 # freed for a second or so. So glibc keeps every block it frees in its heap for the next one
-# (mmap_max=0, trim_threshold) instead of unmapping it. Huge pages, which an earlier round asked
-# for (hugetlb=1), come back slower still once freed a few seconds (scripts/first_write.sh: 0.7 GB/s
-# on first write, against 2.8 with small pages and 35 to 40 GB/s on a second write). System time
-# with huge pages and with these: 5.0 to 8.3 s and 4.6 to 5.3 s for that plate run, 5.3 s and
-# 1.0 s for `continuum` run alone. CHOLMOD asks OpenMP for 4 threads whatever the machine has, and
-# OpenBLAS starts one per core: on our blocks they mostly wait on each other in the kernel. Set any
-# of them on the command line to override; `make check-results` compares the tables made with them.
+# (mmap_max=0, trim_threshold) instead of unmapping it (in the main arena, where our solves
+# allocate; a thread's own arena still unmaps blocks beyond its 64 MiB heaps). Huge pages, which an
+# earlier round asked for (hugetlb=1), come back slower still once freed a few seconds
+# (scripts/first_write.sh: 0.7 GB/s on first write, against 2.8 with small pages and 35 to 40 GB/s
+# on a second write). System time with huge pages and with these: 5.0 to 8.3 s and 4.6 to 5.3 s for
+# that plate run, 5.3 s and 1.0 s for `continuum` run alone. CHOLMOD asks OpenMP for 4 threads
+# whatever the machine has, and OpenBLAS starts one per core: on our blocks they mostly wait on each
+# other in the kernel. Set any of them on the command line to override; `make check-results`
+# compares the tables made with them.
 export OMP_THREAD_LIMIT ?= 1
 export OPENBLAS_NUM_THREADS ?= 1
 export GLIBC_TUNABLES ?= glibc.malloc.mmap_max=0:glibc.malloc.trim_threshold=4294967295

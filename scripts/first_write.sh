@@ -32,6 +32,9 @@ int main(int argc, char** argv) {
 }
 C
 cc -O2 -o "$dir/w" "$dir/w.c"
+# With transparent huge pages set to "never", the huge-page lines measure small pages: say which.
+thp=/sys/kernel/mm/transparent_hugepage/enabled
+echo "transparent huge pages: $(cat "$thp" 2>/dev/null || echo "unknown (no $thp)")"
 for huge in 0 1; do
   label=$([ "$huge" = 1 ] && echo "huge pages" || echo "4 KiB pages")
   "$dir/w" "$size" "$huge" > /dev/null
