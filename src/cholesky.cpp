@@ -7,10 +7,6 @@
 
 namespace plate {
 
-// openmp_one_thread.cpp runs CHOLMOD's one-thread OpenMP regions as plain calls; calling it here
-// links it into every program that factorises.
-void openmp_one_thread_linked();
-
 namespace {
 // A view of A's lower triangle as CHOLMOD's symmetric sparse matrix (no copy).
 cholmod_sparse view_lower(const SpMat& A) {
@@ -33,7 +29,6 @@ cholmod_sparse view_lower(const SpMat& A) {
 }  // namespace
 
 Cholesky::Cholesky() {
-  openmp_one_thread_linked();
   cholmod_start(&common_);
   common_.print = 0;  // CHOLMOD would print its own warnings on stdout; we report failures ourselves
   common_.supernodal = CHOLMOD_SUPERNODAL;

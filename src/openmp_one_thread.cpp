@@ -10,7 +10,8 @@
 // whose second entry a plain call leaves unused: CHOLMOD opens no region inside another).
 //
 // This definition in the executable takes the place of libgomp's for the shared libraries it loads
-// (ELF symbol interposition); libgomp's own is found with dlsym(RTLD_NEXT).
+// (ELF symbol interposition; CMakeLists.txt has every program link it); libgomp's own is found
+// with dlsym(RTLD_NEXT).
 #include <dlfcn.h>
 
 #include <cstdio>
@@ -31,11 +32,6 @@ F libgomp(const char* name, void* where) {
   return reinterpret_cast<F>(f);
 }
 }  // namespace
-
-namespace plate {
-// Called by Cholesky's constructor, so that every program that factorises links this file.
-void openmp_one_thread_linked() {}
-}  // namespace plate
 
 extern "C" void GOMP_parallel(Region fn, void* data, unsigned num_threads, unsigned flags) {
   static const Parallel real = libgomp<Parallel>("GOMP_parallel", RTLD_NEXT);

@@ -5,8 +5,8 @@
 #include <pthread.h>
 
 #include <atomic>
-
-#include "cholesky.hpp"
+#include <stdexcept>
+#include <string>
 
 extern "C" void GOMP_parallel(void (*fn)(void*), void* data, unsigned num_threads, unsigned flags);
 
@@ -39,9 +39,8 @@ void region(void* data) {
 // What CHOLMOD's `if` clauses ask for on small supernodes: no team is formed (level 0), the body
 // runs once on the calling thread and sees a team of one, as it would in libgomp's team of one.
 TEST(OpenMpOneThread, AOneThreadRegionIsAPlainCallOnTheCallingThread) {
-  plate::Cholesky links_the_interposer;  // as every program that factorises does
-  // CHOLMOD's calls reach it only if the executable exports it: the dynamic linker must find this
-  // definition, not libgomp's.
+  // CHOLMOD's calls reach it only if the executable links and exports it: the dynamic linker must
+  // find this definition, not libgomp's.
   EXPECT_EQ(dlsym(RTLD_DEFAULT, "GOMP_parallel"), reinterpret_cast<void*>(&GOMP_parallel));
   Seen seen;
   seen.caller = pthread_self();
