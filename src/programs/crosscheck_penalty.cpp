@@ -162,12 +162,14 @@ void prepare_runs(const Setup& s, const std::vector<int>& levels, const std::vec
   setenv("FF_LOADPATH", "/usr/lib/freefem++", 0);
 }
 
-std::string eps_arg(double eps) {
+// penalty_hct.edp's first level and last (equal: one level).
+std::string eps_arg(double eps, double eps_min) {
   std::ostringstream a;
   a.precision(17);
-  a << " -eps " << eps << " -eps-min " << eps;
+  a << " -eps " << eps << " -eps-min " << eps_min;
   return a.str();
 }
+std::string eps_arg(double eps) { return eps_arg(eps, eps); }
 
 // FreeFEM's way to the solution at one eps by (3a). From w = 0 its iterations grow as eps falls, so
 // an eps of 1e-8 or less (kPathFrom / 100) is reached by the levels 1e-6, 1e-8, ..., eps, each
@@ -176,10 +178,7 @@ std::string eps_arg(double eps) {
 constexpr double kPathFrom = 1e-6;
 std::string one_eps(double eps) {
   if (eps > kPathFrom / 100 * (1 + 1e-12)) return " -continuation 0" + eps_arg(eps);
-  std::ostringstream a;
-  a.precision(17);
-  a << " -continuation 2 -eps " << kPathFrom << " -eps-min " << eps;
-  return a.str();
+  return " -continuation 2" + eps_arg(kPathFrom, eps);
 }
 
 // ---- 1. the table ----------------------------------------------------------------------------
