@@ -1,5 +1,7 @@
-// Formatting of the outputs. Numbers carry 10 significant digits; JSON has no infinity, so an
-// absent obstacle (-inf) is written as null.
+// Formatting of the outputs. The summary and the CSVs carry 10 significant digits, for a reader;
+// the JSON carries every digit of the double, for a program that compares answers (the kink space's
+// max w is within 1e-10 of the series, where ten digits would round the error away). JSON has no
+// infinity, so an absent obstacle (-inf) is written as null.
 #include "summary.hpp"
 
 #include <cmath>
@@ -13,7 +15,7 @@
 namespace plate {
 
 namespace {
-// Ten digits: more than any answer here is certain to, so the printing never limits it.
+// Ten digits for a reader: about what the finest answers here are certain to (the JSON has every digit).
 std::string summary_value(double v) { return std::isfinite(v) ? fmt_digits(v, 10) : "null"; }
 std::string csv_num(double v) {
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
@@ -61,10 +63,11 @@ std::string line_force_csv(const Problem& p, const LineForce& f, const LineFigur
 namespace {
 using Json = nlohmann::ordered_json;  // keys in the order written, as a reader expects them
 
-// 10 significant digits, as the CSV has them; JSON has no infinity or NaN, so those become null.
+// The double itself (nlohmann writes the shortest form that reads back to it); JSON has no infinity
+// or NaN, so those become null.
 Json number(double v) {
   if (!std::isfinite(v)) return nullptr;
-  return std::stod(csv_num(v));
+  return v;
 }
 
 Json numbers(const std::vector<double>& v) {
