@@ -155,15 +155,16 @@ TEST(PenaltyFreeFem, NonlinearAndLinearSchemesGiveTheSameSolutionAtOneEps) {
 }
 
 // With no contact (the obstacle far below, a uniform load), (5a) is a linear iteration whose slowest
-// mode contracts by exactly 1/(1 + eps lambda_1h) (measured where the steps, 1e-8, are still far
-// above round-off; below 1e-9 round-off moves the ratio by 1e-6); and lambda_1h tends, from below with the lumped
-// mass, to the published first eigenvalue of the clamped square.
+// mode contracts by exactly 1/(1 + eps lambda_1h), measured at steps of 1e-6: the other modes are gone
+// by then, and round-off, which moves the ratio by about 4 rho / step (crosscheck_penalty.cpp,
+// measured_factor_noise), is still below 1e-7 there, where at 1e-8 it reached 1e-6; and lambda_1h
+// tends, from below with the lumped mass, to the published first eigenvalue of the clamped square.
 TEST(PenaltyFreeFem, LinearSchemeContractsByTheFirstEigenvalueWhichTendsToThePublishedOne) {
   const double lambda1 = plate_constant(kRef, "lambda1");
   std::vector<double> err;
   for (int n : {1, 2}) {
     const double eps = 1e-4;
-    const PenaltyRun r = penalty(n, "-R -1 -load 1 -continuation 0 -eps 1e-4 -tol 1e-8 -eigen 1");
+    const PenaltyRun r = penalty(n, "-R -1 -load 1 -continuation 0 -eps 1e-4 -tol 1e-6 -eigen 1");
     ASSERT_TRUE(r.converged) << r.why;
     ASSERT_EQ(r.levels.size(), 1u);
     EXPECT_NEAR(r.levels[0].last_ratio, 1 / (1 + eps * r.lambda1h), 1e-6) << "n = " << n;
