@@ -1,5 +1,5 @@
 // Formatting of the outputs. The summary and the CSVs carry 10 significant digits, for a reader;
-// the JSON carries every digit of the double, for a program that compares answers (the kink space's
+// the grid schemes' JSON carries every digit of the double (the series' JSON, rim_report.cpp, 15), for a program that compares answers (the kink space's
 // max w is within 1e-10 of the series, where ten digits would round the error away). JSON has no
 // infinity, so an absent obstacle (-inf) is written as null.
 #include "summary.hpp"
@@ -63,7 +63,7 @@ std::string line_force_csv(const Problem& p, const LineForce& f, const LineFigur
 namespace {
 using Json = nlohmann::ordered_json;  // keys in the order written, as a reader expects them
 
-// The double itself (nlohmann writes the shortest form that reads back to it); JSON has no infinity
+// The double itself (nlohmann writes a form that reads back to it exactly); JSON has no infinity
 // or NaN, so those become null.
 Json number(double v) {
   if (!std::isfinite(v)) return nullptr;
