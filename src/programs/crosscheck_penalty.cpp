@@ -200,8 +200,8 @@ constexpr double kEigenTol = 1e-6;   // |measured - q| allowed above round-off: 
 // 32-cell mesh, stopped at steps of 1e-8, 1e-7 and 1e-6 it was 2.3e-6, 2.6e-7 and 1.5e-8 from
 // 1/(1 + eps lambda_1h): round-off wins below 1e-6, and the other modes are gone by then.
 constexpr double kEigenStop = 1e-6;
-// The least noise a measured factor is printed and judged with: a rebuild moved its seventh decimal
-// even on the coarse meshes.
+// The least noise a measured factor is printed and judged with: when the steps stopped at 1e-8, a
+// rebuild moved its seventh decimal even on the coarse meshes.
 constexpr double kMeasuredNoise = 1e-7;
 // What round-off can move the measured factor s_n / s_(n-1), the ratio of the last two steps: each of
 // the three iterates behind them carries about rho, FreeFEM's estimate for the vertex value at the

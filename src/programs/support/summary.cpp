@@ -1,7 +1,8 @@
 // Formatting of the outputs. The summary and the CSVs carry 10 significant digits, for a reader;
-// the grid schemes' JSON carries every digit of the double (the series' JSON, rim_report.cpp, 15), for a program that compares answers (the kink space's
-// max w is within 1e-10 of the series, where ten digits would round the error away). JSON has no
-// infinity, so an absent obstacle (-inf) is written as null.
+// the grid schemes' JSON carries every digit of the double (the series' JSON, rim_report.cpp, 15),
+// for a program that compares answers (the kink space's max w is within 1e-10 of the series, where
+// ten digits would round the error away). JSON has no infinity, so an absent obstacle (-inf) is
+// written as null.
 #include "summary.hpp"
 
 #include <cmath>
