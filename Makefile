@@ -76,28 +76,34 @@ say = @printf '\n== make: %s (about %s)\n' $(1) $(2)
 # written: keep it. It is older than the program that makes it, so the next make remakes it.
 .PRECIOUS: $(wildcard results/* results/large/*)
 
-# `make all` runs the steps that share no output side by side, one per core, then the benchmarks
-# alone (so that no other step disturbs their timings), then the document, and ends with a table of
-# what each step cost (scripts/step_report.sh). The steps go in two rounds: first what the penalty
-# cross-check reads (the paper's table, Fig. 2's data, the contraction factors) beside the exact
-# cross-check, then the penalty cross-check, the longest step, first of the rest. Within one round
-# make -j would start the penalty cross-check only after every step queued while its inputs were
-# being made (a fresh clone's make all of 4fe1182: it started 3 min in, and ran alone for its last 3.4 min).
+# `make all` runs the steps that share no output side by side, one per core, the benchmarks among
+# them, then the document, and ends with a table of what each step cost (scripts/step_report.sh).
+# The steps go in two rounds: first what the penalty cross-check reads (the paper's table, Fig. 2's
+# data, the contraction factors) beside the exact cross-check, then the rest, longest first. Within
+# one round make -j would start the penalty cross-check only after every step queued while its
+# inputs were being made (a fresh clone's make all of 4fe1182: it started 3 min in, and ran alone
+# for its last 3.4 min). The benchmarks used to run alone, after the rest, so that nothing would
+# disturb their timings; but the two cores here are two cores, not two threads of one, and a
+# process on one barely slows one on the other (plate -n 512 took 5.66 to 5.88 s alone and 5.61 to
+# 5.79 s with a second beside it), while running them alone cost 6.3 min of one core idle. What
+# would disturb them is a third process: in the pool the penalty cross-check runs its FreeFEM runs
+# one at a time (PENALTY_JOBS=1), not one per core as it does when made on its own.
 # The page's first screen quotes the run's time from rebuild_times.csv, which step_report.sh writes
 # only at the end: the page is rendered once more then (seconds), or it would show the run before.
 STEPS_FIRST := $(TABLE_PAPER) $(FIG2_DATA) $(CONTRACTION) $(CROSSCHECK)
+PENALTY_JOBS ?= $(JOBS)
 ALL_START := $(shell date +%s)
 all: build ## build, then every result, figure, benchmark and the document (the steps side by side on the cores found)
 	@date +%s > $(BUILD)/.all-steps-start
 	$(MAKE) --no-print-directory -j $(JOBS) --output-sync=target $(STEPS_FIRST)
-	$(MAKE) --no-print-directory -j $(JOBS) --output-sync=target steps
-	$(MAKE) --no-print-directory bench
+	$(MAKE) --no-print-directory -j $(JOBS) --output-sync=target PENALTY_JOBS=1 steps
 	$(MAKE) --no-print-directory paper
 	@scripts/step_report.sh $$(( $$(date +%s) - $(ALL_START) )) $$(( $$(date +%s) - $$(cat $(BUILD)/.all-steps-start) ))
 	@$(MAKE) --no-print-directory document > /dev/null
 
-# Longest first (make -j starts prerequisites in the order they are listed).
-steps: crosscheck liftoff $(TABLE_FINE) hard-cases continuum kink rim-series results own-scenes
+# Longest first (make -j starts prerequisites in the order they are listed; the times are this
+# machine's: 5.4, 3.5, 2.8, 2.8, 2.4 min, then a minute or less each); `bench` last, for its figures.
+steps: crosscheck $(BENCH) liftoff $(TTA) $(TABLE_FINE) hard-cases continuum kink results/micro_benchmarks.md rim-series results own-scenes bench
 
 help: ## list the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 12
@@ -131,7 +137,7 @@ $(CROSSCHECK) &: $(BUILD)/crosscheck reference/square_with_circle.geo reference/
 $(CROSSCHECK_PENALTY) &: $(BUILD)/crosscheck_penalty reference/square_with_circle.geo reference/quarter_square_with_circle.geo reference/penalty_hct.edp reference/contact_hct.edp reference/checked_solve.idp reference/mirror_quarter.idp \
                          reference/paper_table.csv reference/plate_constants.csv $(PAPER_NUMBERS) results/table.csv results/contraction.csv \
                          results/fig2.csv | deps
-	scripts/step.sh "results/crosscheck_penalty.md: the FreeFEM penalty script against the table of the paper and this code at fixed eps and in Fig. 2" "3.5 min" $(BUILD)/crosscheck_penalty --out results --work $(BUILD)/crosscheck-penalty-work
+	scripts/step.sh "results/crosscheck_penalty.md: the FreeFEM penalty script against the table of the paper and this code at fixed eps and in Fig. 2" "3.5 min" $(BUILD)/crosscheck_penalty --out results --work $(BUILD)/crosscheck-penalty-work --jobs $(PENALTY_JOBS)
 $(PENALTY_FIGURE): results/crosscheck_penalty_fig2.csv
 $(TABLE_FIGURE): results/crosscheck_penalty_table.csv
 
