@@ -78,11 +78,12 @@ say = @printf '\n== make: %s (about %s)\n' $(1) $(2)
 
 # `make all` runs the steps that share no output side by side, one per core, the benchmarks among
 # them, then the document, and ends with a table of what each step cost (scripts/step_report.sh).
-# The steps go in two rounds: first what the penalty cross-check reads (the paper's table, Fig. 2's
-# data, the contraction factors) beside the exact cross-check, then the rest, longest first. Within
-# one round make -j would start the penalty cross-check only after every step queued while its
-# inputs were being made (a fresh clone's make all of 4fe1182: it started 3 min in, and ran alone
-# for its last 3.4 min). The benchmarks used to run alone, after the rest, so that nothing would
+# The steps go in two rounds: first what the penalty cross-check and the benchmarks read (the
+# paper's table, Fig. 2's data, the contraction factors, the series' answer) beside the exact
+# cross-check, then the rest, longest first. Within one round make -j starts a step whose inputs
+# are still being made only after every step it queued meanwhile (a fresh clone's make all of
+# 4fe1182 started the penalty cross-check 3 min in, and it ran alone for its last 3.4 min; one of
+# c34c6ad's started the speed benchmark, which waited for the series' answer, after all the rest). The benchmarks used to run alone, after the rest, so that nothing would
 # disturb their timings; but the two cores here are two cores, not two threads of one, and a
 # process on one barely slows one on the other (plate -n 512 took 5.66 to 5.88 s alone and 5.61 to
 # 5.79 s with a second beside it), while running them alone cost 6.3 min of one core idle. What
@@ -90,7 +91,7 @@ say = @printf '\n== make: %s (about %s)\n' $(1) $(2)
 # one at a time (PENALTY_JOBS=1), not one per core as it does when made on its own.
 # The page's first screen quotes the run's time from rebuild_times.csv, which step_report.sh writes
 # only at the end: the page is rendered once more then (seconds), or it would show the run before.
-STEPS_FIRST := $(TABLE_PAPER) $(FIG2_DATA) $(CONTRACTION) $(CROSSCHECK)
+STEPS_FIRST := $(CROSSCHECK) $(FIG2_DATA) $(RIM_SERIES) $(TABLE_PAPER) $(CONTRACTION)
 PENALTY_JOBS ?= $(JOBS)
 ALL_START := $(shell date +%s)
 all: build ## build, then every result, figure, benchmark and the document (the steps side by side on the cores found)
@@ -102,8 +103,9 @@ all: build ## build, then every result, figure, benchmark and the document (the 
 	@$(MAKE) --no-print-directory document > /dev/null
 
 # Longest first (make -j starts prerequisites in the order they are listed; the times are this
-# machine's: 5.4, 3.5, 2.8, 2.8, 2.4 min, then a minute or less each); `bench` last, for its figures.
-steps: crosscheck $(BENCH) liftoff $(TTA) $(TABLE_FINE) hard-cases continuum kink results/micro_benchmarks.md rim-series results own-scenes bench
+# machine's: 5.2, 3.5, 2.9, 2.0, 1.9 min, then about a minute or less each); `bench` last, for its
+# figures.
+steps: crosscheck $(BENCH) $(TTA) $(TABLE_FINE) liftoff hard-cases results/micro_benchmarks.md continuum kink results own-scenes bench
 
 help: ## list the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 12
