@@ -32,8 +32,11 @@ constexpr double kKinkFlatCells = 1.5, kKinkZeroCells = 2.5;
 // (D31) fits a grid whose circle is at least this many cells in radius (so no square the rim cuts
 // holds its centre) and kKinkZeroCells + 1.5 cells from every clamped edge.
 constexpr double kKinkMinRadiusCells = 2;
-// The edge rows' knot spacing, in cells, where (D31) is on (problem.hpp's rows_on).
-constexpr double kKinkKnotCells = 2;
+// The edge rows' knot spacing where (D31) is on (problem.cpp's rows_on): kKinkKnotCells cells, or
+// closer where that leaves fewer than kKinkKnotsAtLeast knots round the circle, but never closer
+// than kKinkKnotCellsMin cells.
+constexpr double kKinkKnotCells = 4, kKinkKnotCellsMin = 2;
+constexpr int kKinkKnotsAtLeast = 32;
 // Gauss points each way of the polar rule of the blocks.
 constexpr int kKinkGaussPoints = 8;
 
@@ -57,6 +60,8 @@ struct KinkEnrichment {
 // not 0 clear of the clamped edges (kKinkZeroCells + 1.5 cells from the rim). A coarser grid of a
 // sequence that fails this is solved in the plain space.
 bool kink_fits(const Grid& g, const EdgeCurve& circle);
+// The rows' knot spacing in cells, with (D31) on a circle of radius r on cells of side h.
+double kink_knot_cells(double r, double h);
 // Why (D31) does not fit grid g, in words; empty where it fits.
 std::string kink_misfit(const Grid& g, const EdgeCurve& circle);
 

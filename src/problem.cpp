@@ -163,11 +163,11 @@ bool kink_on(const Grid& g, const Scene& s, const SamplingSpec& spec) {
 
 // @region kink-rows
 // With the kink carried (D31) the plate resolves the rim to order 4, and the rows' splines must too:
-// their knots H then go with h, two cells apart, rather than as h^(3/7) r^(4/7) (D12), which balanced
-// the rows against a plate that could not follow the kink.
+// their knots H then go with h, two to four cells apart (kink_knot_cells), rather than as
+// h^(3/7) r^(4/7) (D12), which balanced the rows against a plate that could not follow the kink.
 EdgeRows rows_on(const Grid& g, const Scene& s, const SamplingSpec& spec) {
   EdgeRows rows = spec.rows;
-  if (kink_on(g, s, spec) && rows.cells == 0) rows.cells = kKinkKnotCells;
+  if (kink_on(g, s, spec) && rows.cells == 0) rows.cells = kink_knot_cells(s.edge.r, g.h);
   return rows;
 }
 // @end kink-rows

@@ -53,8 +53,8 @@ Problem make_samples(const Scene& s, const Grid& g, const SamplingSpec& spec);
 // Whether the space on grid g is widened by (D31): asked for, edge sampling (not edge-gauss), and a
 // circle it fits.
 bool kink_on(const Grid& g, const Scene& s, const SamplingSpec& spec);
-// The edge rows grid g gets: spec.rows, with splines two cells apart where (D31) is on and no spacing
-// was asked for.
+// The edge rows grid g gets: spec.rows, with splines kink_knot_cells apart where (D31) is on and no
+// spacing was asked for.
 EdgeRows rows_on(const Grid& g, const Scene& s, const SamplingSpec& spec);
 
 // Gives p the enrichment e (D31): its interpolant, and a column of S for each of its functions
