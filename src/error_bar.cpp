@@ -24,9 +24,10 @@ ErrorBar error_bar(const std::vector<double>& values) {
     b.limit = e.limit;
     b.bar = std::abs(b.value - e.limit) + e.bar;
     b.basis = "richardson";
-  } else if (values.size() >= 3 && !std::isfinite(b.order)) {
-    // The increments change sign or grow: the values swing rather than settle, and the larger of the
-    // last two swings is the scale of the finest value's error.
+  } else if (values.size() >= 3 && !(b.order <= kLargestOrder)) {
+    // The increments change sign or grow, or the last is too small to be convergence: the values
+    // swing rather than settle, and the larger of the last two swings is the scale of the finest
+    // value's error.
     const size_t m = values.size();
     b.bar = std::max(std::abs(values[m - 1] - values[m - 2]), std::abs(values[m - 2] - values[m - 3]));
     b.basis = "largest of the last two differences";

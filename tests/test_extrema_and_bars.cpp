@@ -112,5 +112,14 @@ TEST(ErrorBar, HoldsTheErrorOfASteadySequenceAndSaysWhenItIsNotSteady) {
   const ErrorBar swinging = error_bar({1.0, 1.1, 1.05, 1.07});  // the last increments change sign
   EXPECT_EQ(swinging.basis, "largest of the last two differences");
   EXPECT_NEAR(swinging.bar, 0.05, 1e-12);
+  // Values that cross their limit 1 between the last two grids: errors -8e-3, 3e-5, 3.3e-5 (the
+  // shape of max w with the kink carried on n = 64, 128, 256). The last difference, 3e-6, is 2700
+  // times smaller than the one before, faster than anything converges here, and would not hold the
+  // error of 3.3e-5: the larger of the last two differences does.
+  const std::vector<double> crossing{1 - 4e-2, 1 - 8e-3, 1 + 3e-5, 1 + 3.3e-5};
+  const ErrorBar crossed = error_bar(crossing);
+  EXPECT_EQ(crossed.basis, "largest of the last two differences");
+  EXPECT_GE(crossed.bar, 3.3e-5);
+  EXPECT_NEAR(crossed.bar, 8.03e-3, 1e-12);
   EXPECT_EQ(error_bar({1.0}).basis, "none");
 }
