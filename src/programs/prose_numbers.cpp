@@ -23,6 +23,7 @@
 #include "dual_active_set.hpp"
 #include "published.hpp"
 #include "rim_contact.hpp"
+#include "error_bar.hpp"
 #include "refinement.hpp"
 #include "richardson.hpp"
 
@@ -433,8 +434,9 @@ void kink_numbers(Numbers& num, const std::string& results) {
     before[key] = r;
   }
   // paper.md says that with the kink carried max w is closer to the series than the plain space on
-  // every grid of every scene, that its observed orders are not steady, and that the line load stalls
-  // from n = 128 to 256 on the paper's scene. If a rebuild finds otherwise a sentence is false, and the
+  // every grid of every scene, that its observed orders are not steady, and that the line load keeps
+  // converging from n = 128 to 256 on the paper's scene (at an order of at least 2; with the knots two
+  // cells apart it had stalled there). If a rebuild finds otherwise a sentence is false, and the
   // build stops here.
   std::map<std::string, std::map<std::string, std::map<int, std::size_t>>> rows;  // scene -> space -> n -> row
   for (std::size_t r = 0; r < t.rows.size(); ++r) rows[t.text(r, "scene")][t.text(r, "space")][std::stoi(t.text(r, "n"))] = r;
@@ -452,8 +454,8 @@ void kink_numbers(Numbers& num, const std::string& results) {
   }
   auto& paper = rows["paper"]["kink"];
   const auto line = [&](int n) { return paper.count(n) ? t.number(paper[n], "err_line_pointwise") : NAN; };
-  if (!(std::log2(line(128) / line(256)) < 1))
-    throw std::runtime_error(t.path + ": the line load no longer stalls from n = 128 to 256; paper.md says it does");
+  if (!(std::log2(line(128) / line(256)) >= 2))
+    throw std::runtime_error(t.path + ": the line load converges from n = 128 to 256 at an order below 2; paper.md says it keeps converging");
 }
 
 // Package versions of the machine that built the document (results/versions.csv, from dpkg).
@@ -499,6 +501,9 @@ void model_numbers(Numbers& num) {
   num.put("model.kink_clearance_cells", fmt("%g", kKinkZeroCells + 1.5), "src/kink_enrichment.hpp kKinkZeroCells + 1.5");
   num.put("model.kink_radius_cells", fmt("%g", kKinkMinRadiusCells), "src/kink_enrichment.hpp kKinkMinRadiusCells");
   num.put("model.kink_knot_cells", fmt("%g", kKinkKnotCells), "src/kink_enrichment.hpp kKinkKnotCells");
+  num.put("model.largest_order", fmt("%g", kLargestOrder), "src/error_bar.hpp kLargestOrder");
+  num.put("model.kink_knot_cells_min", fmt("%g", kKinkKnotCellsMin), "src/kink_enrichment.hpp kKinkKnotCellsMin");
+  num.put("model.kink_knots_at_least", fmt("%d", kKinkKnotsAtLeast), "src/kink_enrichment.hpp kKinkKnotsAtLeast");
   num.put("model.kink_gauss_points", count(kKinkGaussPoints), "src/kink_enrichment.hpp kKinkGaussPoints");
   num.put("model.refine_largest_first", fmt("%g", kRefineLargestFirst), "src/refinement.hpp kRefineLargestFirst");
   num.put("model.refine_contraction", fmt("%g", kRefineContraction), "src/refinement.hpp kRefineContraction");
