@@ -503,7 +503,7 @@ void model_numbers(Numbers& num) {
   num.put("model.kink_knot_cells", fmt("%g", kKinkKnotCells), "src/kink_enrichment.hpp kKinkKnotCells");
   num.put("model.largest_order", fmt("%g", kLargestOrder), "src/error_bar.hpp kLargestOrder");
   num.put("model.kink_knot_cells_min", fmt("%g", kKinkKnotCellsMin), "src/kink_enrichment.hpp kKinkKnotCellsMin");
-  num.put("model.kink_knots_at_least", fmt("%d", kKinkKnotsAtLeast), "src/kink_enrichment.hpp kKinkKnotsAtLeast");
+  num.put("model.kink_knots_at_least", std::to_string(kKinkKnotsAtLeast), "src/kink_enrichment.hpp kKinkKnotsAtLeast");
   num.put("model.kink_gauss_points", count(kKinkGaussPoints), "src/kink_enrichment.hpp kKinkGaussPoints");
   num.put("model.refine_largest_first", fmt("%g", kRefineLargestFirst), "src/refinement.hpp kRefineLargestFirst");
   num.put("model.refine_contraction", fmt("%g", kRefineContraction), "src/refinement.hpp kRefineContraction");
