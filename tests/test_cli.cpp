@@ -105,6 +105,20 @@ TEST(Cli, JsonCarriesEveryDigitTheSummaryRounds) {
   }
 }
 
+// The line load's header says what the curve is made of. Where the plate lifts off part of the rim
+// the rows are splines on the contact arcs and points elsewhere (D28), and the header counts those,
+// not the periodic knots, which there are none of.
+TEST(Cli, LineLoadHeaderCountsTheArcsWhereThePlateLiftsOff) {
+  const std::string line = temp_path("liftoff_line.csv");
+  const PlateRun r = run_plate("-q -n 32 --lx 2 --ly 1 --centre 1,0.5 --line-csv " + line);
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::ifstream in(line);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_NE(header.find(" arcs; off them the nearest of "), std::string::npos) << header;
+  EXPECT_EQ(header.find(" 0 knots"), std::string::npos) << header;
+}
+
 // The semi-analytic scheme answers the paper's scene with the keys the grid schemes use, within the
 // exact finite-element solve's own distance on n = 64 (its last increment to n = 128 bounds it there:
 // edge sampling converges at an order above 2), and refuses what it does not model by name.

@@ -43,8 +43,16 @@ std::string line_force_csv(const Problem& p, const LineForce& f, const LineFigur
   std::ostringstream o;
   if (f.spline_degree > 0) {  // a function of the angle (D12): its values at fixed angles, comparable across grids
     o << "# plate: the contact force per unit length q on the rim, the spline of the edge rows' multipliers (degree "
-      << f.spline_degree << ", " << f.coefficients.size() << " knots), at " << g.theta.size()
-      << " equally spaced angles theta about the circle's centre\n"
+      << f.spline_degree << ", ";
+    if (f.laid_out()) {  // (D28): splines on the contact arcs, points elsewhere
+      size_t bases = 0;
+      for (const auto& c : f.arc_coefficients) bases += c.size();
+      o << bases << " bases on " << f.layout.arcs.size() << " arcs; off them the nearest of " << f.point_theta.size()
+        << " point rows)";
+    } else {
+      o << f.coefficients.size() << " knots)";
+    }
+    o << ", at " << g.theta.size() << " equally spaced angles theta about the circle's centre\n"
          "theta,x,y,q\n";
     for (size_t k = 0; k < g.theta.size(); ++k)
       o << csv_num(g.theta[k]) << ',' << csv_num(g.x[k]) << ',' << csv_num(g.y[k]) << ',' << csv_num(g.q[k]) << '\n';
