@@ -107,11 +107,13 @@ TEST(Cli, JsonCarriesEveryDigitTheSummaryRounds) {
 
 // The line load's header says what the curve is made of. Where the plate lifts off part of the rim
 // the rows are splines on the contact arcs and points elsewhere (D28), and the header counts those,
-// not the periodic knots, which there are none of.
+// not the periodic knots, which there are none of; the JSON says the same.
 TEST(Cli, LineLoadHeaderCountsTheArcsWhereThePlateLiftsOff) {
   const std::string line = temp_path("liftoff_line.csv");
-  const PlateRun r = run_plate("-q -n 32 --lx 2 --ly 1 --centre 1,0.5 --line-csv " + line);
+  const std::string json = temp_path("liftoff.json");
+  const PlateRun r = run_plate("-q -n 32 --lx 2 --ly 1 --centre 1,0.5 --line-csv " + line + " --json " + json);
   ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(read_json(json)["line_force"].value("rows_are", ""), "spline bases on the contact arcs and points off them");
   std::ifstream in(line);
   std::string header;
   std::getline(in, header);

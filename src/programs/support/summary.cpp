@@ -85,9 +85,16 @@ Json numbers(const std::vector<double>& v) {
   return a;
 }
 
+// What the line load's rows are: the knots of periodic splines (D12), splines on the contact arcs
+// and points off them (D28), or points.
+std::string rows_are(const LineForce& f) {
+  if (f.laid_out()) return "spline bases on the contact arcs and points off them";
+  return f.spline_degree > 0 ? "spline knots" : "points";
+}
+
 Json line_force_json(const LineForce& f, const LineFigures& g) {
   if (f.empty()) return nullptr;
-  Json j = {{"rows", f.q.size()}, {"rows_are", f.spline_degree > 0 ? "spline knots" : "points"},
+  Json j = {{"rows", f.q.size()}, {"rows_are", rows_are(f)},
             {"length", number(f.length)}, {"total", number(f.total)},
             {"mean", number(f.mean)}, {"min", number(f.min)}, {"max", number(f.max)},
             {"theta_min", number(f.theta_min)}, {"theta_max", number(f.theta_max)}};
@@ -239,7 +246,7 @@ std::string summary_text(const Report& r) {
     << summary_value(r.measures.max_abs_m12.y) << ") (at the nodes " << summary_value(e.max_abs_m12) << "), contact nodes: " << e.contact.size() << "\n";
   if (!r.line.empty()) {
     const LineForce& l = r.line;
-    o << "line load on the edge (" << l.q.size() << (l.spline_degree > 0 ? " spline knots" : " points") << "): mean " << summary_value(l.mean) << " (total " << summary_value(l.total)
+    o << "line load on the edge (" << l.q.size() << " rows, " << rows_are(l) << "): mean " << summary_value(l.mean) << " (total " << summary_value(l.total)
       << " over length " << summary_value(l.length) << "), min " << summary_value(l.min)
       << (std::isfinite(l.theta_min) ? " at theta = " + summary_value(l.theta_min) : std::string()) << ", max " << summary_value(l.max)
       << (std::isfinite(l.theta_max) ? " at theta = " + summary_value(l.theta_max) : std::string());
