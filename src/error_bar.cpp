@@ -20,11 +20,12 @@ ErrorBar error_bar(const std::vector<double>& values) {
   const Extrapolation e = extrapolate(values);
   if (!e.orders.empty()) b.order = e.orders.back();
   b.steady = e.steady;
-  if (e.steady) {
+  if (e.steady && b.order <= kLargestOrder) {
     b.limit = e.limit;
     b.bar = std::abs(b.value - e.limit) + e.bar;
     b.basis = "richardson";
   } else if (values.size() >= 3 && !(b.order <= kLargestOrder)) {
+    b.steady = false;
     // The increments change sign or grow, or the last is too small to be convergence: the values
     // swing rather than settle, and the larger of the last two swings is the scale of the finest
     // value's error.

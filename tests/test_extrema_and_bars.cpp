@@ -121,5 +121,12 @@ TEST(ErrorBar, HoldsTheErrorOfASteadySequenceAndSaysWhenItIsNotSteady) {
   EXPECT_EQ(crossed.basis, "largest of the last two differences");
   EXPECT_GE(crossed.bar, 3.3e-5);
   EXPECT_NEAR(crossed.bar, 8.03e-3, 1e-12);
+  // Even a steady order of 7 is beyond any space here, so Richardson's bar is not taken from it.
+  std::vector<double> seventh;
+  for (int k = 0; k < 4; ++k) seventh.push_back(1 + std::pow(0.5, 7 * (k + 1)));
+  const ErrorBar fast = error_bar(seventh);
+  EXPECT_EQ(fast.basis, "largest of the last two differences");
+  EXPECT_FALSE(fast.steady);
+  EXPECT_NEAR(fast.order, 7, 1e-6);
   EXPECT_EQ(error_bar({1.0}).basis, "none");
 }
