@@ -141,11 +141,10 @@ bool kink_fits(const Grid& g, const EdgeCurve& c) { return kink_misfit(g, c).emp
 
 // @region kink-knots
 // The knots of (D31)'s rows. Two cells apart, the rows ask more of the plate than its trace on the
-// rim can tell apart where the rim cuts the squares badly: on the paper's scene at n = 512 the line
-// load swings from knot to knot by 1.5e-4 of its mean near theta = 0.375, where it is within 2e-5
-// elsewhere. Four cells apart it does not (1.7e-6 at n = 512). But a coarse grid's circle then gets
-// too few knots for the load's harmonics, so the spacing closes to leave 32 knots round the circle
-// (eight to each period of cos 4 theta, the paper's leading harmonic), and no closer than two cells.
+// rim can tell apart where the rim cuts the squares badly, and the line load swings from knot to
+// knot there on fine grids; four cells apart it does not. A coarse grid's circle then gets too few
+// knots for the load's harmonics, so the spacing closes to leave kKinkKnotsAtLeast knots round the
+// circle, but no closer than kKinkKnotCellsMin cells.
 double kink_knot_cells(double r, double h) {
   return std::clamp(2 * M_PI * r / (kKinkKnotsAtLeast * h), kKinkKnotCellsMin, kKinkKnotCells);
 }

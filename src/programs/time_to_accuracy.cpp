@@ -402,10 +402,9 @@ int main(int argc, char** argv) {
     const auto lim = read_rim_answer(limits);
     const std::vector<Config> configs = {
         // The names are the figure's key (paper/figures/time_to_accuracy.gp lists the blocks in this order).
-        // The default stops at 512 (its target is met at 128): its max w is within 1.5e-11 of the
-        // series and its force 2.0e-10 there (results/time_to_accuracy.csv), and at 1024 (35 s, read
-        // through the ten-digit JSON of the time) both had grown with round-off (2e-10, 3e-9). Its
-        // line load at 512 is the stall the kink study reports (results/kink.md).
+        // The default stops at 512 (its target is met at 128): its max w is within about 1e-11 of
+        // the series and its force 2e-10 there (results/time_to_accuracy.csv), and at 1024 (35 s, read
+        // through the ten-digit JSON of the time) both had grown with round-off (2e-10, 3e-9).
         {"exact edge kink carried (default)", "", 512, false, ""},
         {"exact edge plain", "--enrich none", 1024, false, ""},
         {"exact edge points", "--edge-rows points", 512, false, ""},
