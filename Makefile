@@ -225,9 +225,10 @@ bench-large: build results/rim_answer.csv ## the exact solver at n = 1024 alone 
 $(BENCH_LARGE):
 	@echo "$@ is missing: make bench-large writes it (the grid n = 1024 alone: 3 min, 15 GiB)" >&2; exit 1
 
+# Through step.sh, so that its time is in rebuild_times.csv with the other steps'.
 results/micro_benchmarks.md: $(BUILD)/micro_bench
-	$(call say,"results/micro_benchmarks.md","1 min")
-	{ echo '```'; $(BUILD)/micro_bench --benchmark_color=false 2>&1; echo '```'; } > $@.tmp && mv $@.tmp $@
+	scripts/step.sh "results/micro_benchmarks.md: the three kernels timed by Google Benchmark" "20 s" \
+	  bash -c '{ echo "\`\`\`"; "$$1" --benchmark_color=false 2>&1; echo "\`\`\`"; } > "$$2.tmp" && mv "$$2.tmp" "$$2"' _ $(BUILD)/micro_bench $@
 
 results/speed_vs_error.svg results/speed_vs_error.png: $(BENCH)
 
