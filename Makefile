@@ -80,20 +80,19 @@ say = @printf '\n== make: %s (about %s)\n' $(1) $(2)
 # them, then the document, and ends with a table of what each step cost (scripts/step_report.sh).
 # The steps go in two rounds: first what the penalty cross-check and the benchmarks read (the
 # paper's table, Fig. 2's data, the contraction factors, the series' answer) beside the exact
-# cross-check (and the micro-benchmarks, which fill the core the exact cross-check would leave idle
-# while Fig. 2's data and the series are made), then the rest, longest first. Within one round
-# make -j starts a step whose inputs are still being made only after every step it queued
-# meanwhile (a fresh clone's make all of 4fe1182 started the penalty cross-check 3 min in, and it
-# ran alone for its last 3.4 min; one of c34c6ad's started the speed benchmark, which waited for
-# the series' answer, after all the rest). The benchmarks used to run alone, after the rest, so
-# that nothing would disturb their timings; but the two cores here are two cores, not two threads
-# of one, and a process on one barely slows one on the other (plate -n 512 took 5.66 to 5.88 s
-# alone and 5.61 to 5.79 s with a second beside it), while running them alone cost 6.3 min of one
-# core idle. What would disturb them is a third process: in the pool the penalty cross-check runs
-# its FreeFEM runs one at a time (PENALTY_JOBS=1), not one per core as it does when made on its own.
+# cross-check, then the rest, longest first. Within one round make -j starts a step whose inputs
+# are still being made only after every step it queued meanwhile (a fresh clone's make all of
+# 4fe1182 started the penalty cross-check 3 min in, and it ran alone for its last 3.4 min; one of
+# c34c6ad's started the speed benchmark, which waited for the series' answer, after all the rest).
+# The benchmarks used to run alone, after the rest, so that nothing would disturb their timings;
+# but the two cores here are two cores, not two threads of one, and a process on one barely slows
+# one on the other (plate -n 512 took 5.66 to 5.88 s alone and 5.61 to 5.79 s with a second beside
+# it), while running them alone cost 6.3 min of one core idle. What would disturb them is a third
+# process: in the pool the penalty cross-check runs its FreeFEM runs one at a time
+# (PENALTY_JOBS=1), not one per core as it does when made on its own.
 # The page's first screen quotes the run's time from rebuild_times.csv, which step_report.sh writes
 # only at the end: the page is rendered once more then (seconds), or it would show the run before.
-STEPS_FIRST := $(CROSSCHECK) $(FIG2_DATA) $(RIM_SERIES) $(TABLE_PAPER) $(CONTRACTION) results/micro_benchmarks.md
+STEPS_FIRST := $(CROSSCHECK) $(FIG2_DATA) $(RIM_SERIES) $(TABLE_PAPER) $(CONTRACTION)
 PENALTY_JOBS ?= $(JOBS)
 ALL_START := $(shell date +%s)
 all: build ## build, then every result, figure, benchmark and the document (the steps side by side on the cores found)
