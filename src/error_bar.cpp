@@ -19,13 +19,13 @@ ErrorBar error_bar(const std::vector<double>& values) {
   if (values.size() < 2) return b;
   const Extrapolation e = extrapolate(values);
   if (!e.orders.empty()) b.order = e.orders.back();
-  b.steady = e.steady;
-  if (e.steady && b.order <= kLargestOrder) {
+  const bool believable = b.order <= kLargestOrder;  // false for NaN: they swing, or are too few
+  b.steady = e.steady && believable;
+  if (b.steady) {
     b.limit = e.limit;
     b.bar = std::abs(b.value - e.limit) + e.bar;
     b.basis = "richardson";
-  } else if (values.size() >= 3 && !(b.order <= kLargestOrder)) {
-    b.steady = false;
+  } else if (values.size() >= 3 && !believable) {
     // The increments change sign or grow, or the last is too small to be convergence: the values
     // swing rather than settle, and the larger of the last two swings is the scale of the finest
     // value's error.
