@@ -442,20 +442,18 @@ void kink_numbers(Numbers& num, const std::string& results) {
   for (std::size_t r = 0; r < t.rows.size(); ++r) rows[t.text(r, "scene")][t.text(r, "space")][std::stoi(t.text(r, "n"))] = r;
   const auto w = [&](std::size_t r) { return t.number(r, "err_max_w"); };
   for (auto& [scene, space] : rows) {
+    const auto& kink = space["kink"];
     std::vector<double> orders;
-    for (auto k = space["kink"].begin(); k != space["kink"].end(); ++k) {
+    for (auto k = kink.begin(); k != kink.end(); ++k) {
       if (const auto p = space["plain"].find(k->first); p != space["plain"].end() && !(w(k->second) < w(p->second)))
         throw std::runtime_error(t.path + ": with the kink carried max w is not closer than the plain space on " + scene +
                                  ", n = " + std::to_string(k->first) + "; paper.md says it is");
-      if (k != space["kink"].begin()) orders.push_back(std::log2(w(std::prev(k)->second) / w(k->second)));
+      if (k != kink.begin()) orders.push_back(std::log2(w(std::prev(k)->second) / w(k->second)));
     }
     if (!orders.empty() && *std::max_element(orders.begin(), orders.end()) - *std::min_element(orders.begin(), orders.end()) <= kSteadySpread)
       throw std::runtime_error(t.path + ": with the kink carried max w converges at a steady order on " + scene + "; paper.md says it does not");
-  }
-  // The line load's order from each scene's last grid but one to its last (n = 128 to 256 on the
-  // unit plate).
-  for (auto& [scene, space] : rows) {
-    const auto& kink = space["kink"];
+    // The line load's order from the scene's last grid but one to its last (n = 128 to 256 on the
+    // unit plate).
     if (kink.size() < 2) continue;
     const auto last = std::prev(kink.end()), before = std::prev(last);
     if (!(std::log2(t.number(before->second, "err_line_pointwise") / t.number(last->second, "err_line_pointwise")) >= 2))
@@ -509,7 +507,7 @@ void model_numbers(Numbers& num) {
   num.put("model.kink_knot_cells", fmt("%g", kKinkKnotCells), "src/kink_enrichment.hpp kKinkKnotCells");
   num.put("model.largest_order", fmt("%g", kLargestOrder), "src/error_bar.hpp kLargestOrder");
   num.put("model.kink_knot_cells_min", fmt("%g", kKinkKnotCellsMin), "src/kink_enrichment.hpp kKinkKnotCellsMin");
-  num.put("model.kink_knots_at_least", std::to_string(kKinkKnotsAtLeast), "src/kink_enrichment.hpp kKinkKnotsAtLeast");
+  num.put("model.kink_knots_at_least", count(kKinkKnotsAtLeast), "src/kink_enrichment.hpp kKinkKnotsAtLeast");
   num.put("model.kink_gauss_points", count(kKinkGaussPoints), "src/kink_enrichment.hpp kKinkGaussPoints");
   num.put("model.refine_largest_first", fmt("%g", kRefineLargestFirst), "src/refinement.hpp kRefineLargestFirst");
   num.put("model.refine_contraction", fmt("%g", kRefineContraction), "src/refinement.hpp kRefineContraction");
