@@ -68,6 +68,7 @@ TEST(PenaltyFreeFem, RefusesBadArgumentsNamingThem) {
       {"-maxit 0", "-maxit"},        {"-nu 0.5", "-nu"},            {"-R inf", "-R"},
       {"-r nan", "-r"},              {"-continuation 3", "-continuation"},
       {"-eigen yes", "-eigen"},      {"-unknown 1", "-unknown"},    {"-tol", "-tol"},
+      {"-kink-split 0", "-kink-split"}, {"-kink-split 2.5", "-kink-split"},
   };
   for (const auto& c : cases) {
     const Captured r = run_script(kPenalty, base + " " + c.args);
@@ -139,6 +140,33 @@ TEST(PenaltyFreeFem, ThePathToOneEpsEndsAtTheColdStartsSolution) {
   ASSERT_EQ(odd.levels.size(), 3u);
   EXPECT_DOUBLE_EQ(odd.levels[1].eps, 1e-8);
   EXPECT_DOUBLE_EQ(odd.levels[2].eps, 3e-9);
+}
+
+// The disk's rule follows the kink of (R - w)^+ on the curve w = R by cutting the sub-triangles the
+// curve crosses into k x k pieces (penalty_hct.edp, region penalty-disk): each crossed piece misses
+// the kink by (s / k)^3 and about k of them are crossed, so what the kink leaves falls like k^-2.
+// At eps = 1e-6 the curve crosses the disk; from k = 4 to 8 the answer must then move by well under
+// a quarter of what it moved from 1 to 4 (k^-2 gives 1/20). At eps = 1e-3 the plate stays below R
+// on the whole disk, nothing is crossed, and k must change nothing.
+TEST(PenaltyFreeFem, CuttingTheCrossedSubTrianglesFollowsTheKink) {
+  const std::string args = "-scheme nonlinear -continuation 0 -tol 1e-13 -sampling disk";
+  PenaltyRun crossed[3], clear[2];
+  const int ks[3] = {1, 4, 8};
+  for (int i = 0; i < 3; ++i) {
+    crossed[i] = penalty(1, args + " -eps 1e-6 -eps-min 1e-6 -kink-split " + std::to_string(ks[i]));
+    ASSERT_TRUE(crossed[i].converged) << crossed[i].why;
+  }
+  const double moved_first = std::abs(crossed[1].max_w - crossed[0].max_w);
+  const double moved_next = std::abs(crossed[2].max_w - crossed[1].max_w);
+  EXPECT_GT(moved_first, 100 * crossed[0].max_w_roundoff);  // the kink matters here
+  EXPECT_LT(moved_next, 0.25 * moved_first) << moved_first << " then " << moved_next;
+  EXPECT_LT(std::abs(crossed[2].force - crossed[1].force), 0.25 * std::abs(crossed[1].force - crossed[0].force));
+  for (int i = 0; i < 2; ++i) {
+    clear[i] = penalty(1, args + " -eps 1e-3 -eps-min 1e-3 -kink-split " + std::to_string(ks[2 * i]));
+    ASSERT_TRUE(clear[i].converged) << clear[i].why;
+  }
+  EXPECT_EQ(clear[0].max_w, clear[1].max_w);
+  EXPECT_EQ(clear[0].force, clear[1].force);
 }
 
 // (3a) and (5a) solve the same discrete problem (2a): at one eps, stopped far below the difference

@@ -347,6 +347,10 @@ struct EpsPart {
   std::vector<std::array<double, 4>> rate;  // per eps: FreeFEM dw, df; ours dw, df
   std::array<double, 4> rate_noise{};       // round-off in each column
   bool rate_ok = true, ok = true;
+  // FreeFEM's levels that ended where their steps stalled at round-off (penalty_hct.edp, region
+  // roundoff-stop): how many, and the largest such step beside its round-off estimate.
+  int roundoff_stops = 0;
+  double roundoff_step = 0, roundoff_estimate = 0;
 };
 void run_fixed_eps(const Setup& s, EpsPart& part) {
   std::cerr << "crosscheck_penalty: fixed eps (" << s.eps_values.size() << " values, FreeFEM and this code)\n";
@@ -403,6 +407,11 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
       const int n = s.eps_levels[j];
       const PenaltyRun& r = ff_runs[k * s.eps_levels.size() + j];
       if (!r.converged) throw std::runtime_error("penalty_hct.edp did not converge at eps = " + fmt("%g", eps) + ": " + r.why);
+      for (const PenaltyLevel& l : r.levels)
+        if (l.stopped_at_roundoff > 0) {
+          ++part.roundoff_stops;
+          if (l.last_step > part.roundoff_step) part.roundoff_step = l.last_step, part.roundoff_estimate = l.stopped_at_roundoff;
+        }
       part.eps_runs.push_back({kFreefemCode, 4 * n, r.h, r.max_w, r.force, r.max_w_roundoff, r.force_roundoff});
       fw.push_back(r.max_w), ff.push_back(r.force);
       fwn.push_back(r.max_w_roundoff), ffn.push_back(r.force_roundoff);
@@ -676,7 +685,12 @@ std::string eps_md(const Setup& s, const EpsPart& part) {
                                                  {"n_last", std::to_string(s.eps_ns.back())},
                                                  {"grade_first", fmt("%.3g", layer_grading(s.scene, s.eps_values.front()).grade)},
                                                  {"grade_last", fmt("%.3g", layer_grading(s.scene, s.eps_values.back()).grade)}})
-     << " " << words(steady == 0 ? "crosscheck_penalty.eps_cells_unsteady" : "crosscheck_penalty.eps_cells_steady") << "\n";
+     << " " << words(steady == 0 ? "crosscheck_penalty.eps_cells_unsteady" : "crosscheck_penalty.eps_cells_steady");
+  if (part.roundoff_stops > 0)
+    md << " " << words("crosscheck_penalty.eps_roundoff_stops", {{"count", std::to_string(part.roundoff_stops)},
+                                                                 {"step", fmt("%.3g", part.roundoff_step)},
+                                                                 {"estimate", fmt("%.3g", part.roundoff_estimate)}});
+  md << "\n";
   // With f = 0, (2) is positively homogeneous in (phi, w): a relative change d of the obstacle's height
   // changes w_eps and the force by the same d. So a row resolves a change of the scene of its
   // tolerance over its value, and no smaller.

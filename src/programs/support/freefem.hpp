@@ -59,6 +59,9 @@ struct PenaltyLevel {
   double first_step = 0, last_step = 0;  // max over vertices of |w^{n+1} - w^n|, first and last
   double last_ratio = -1;                // last_step over the step before it; -1 after one step
   double level_change = -1;              // to the previous level; -1 on the first
+  // > 0: the level ended above tol, where its steps stalled within twice this estimate of their
+  // round-off (penalty_hct.edp, region roundoff-stop); 0: it met tol.
+  double stopped_at_roundoff = 0;
 };
 struct PenaltyRun {
   std::string scheme, sampling;
