@@ -153,7 +153,7 @@ PenaltyRun penalty_values(const nlohmann::json& j) {
     for (const auto& l : j.at("levels"))
       r.levels.push_back({l.at("eps").get<double>(), l.at("iterations").get<int>(), l.at("first_step").get<double>(),
                           l.at("last_step").get<double>(), l.at("last_ratio").get<double>(),
-                          l.at("level_change").get<double>(), l.value("stopped_at_roundoff", 0.0)});
+                          l.at("level_change").get<double>(), l.at("stopped_at_roundoff").get<double>()});
     if (j.contains("lambda1h")) r.lambda1h = j.at("lambda1h").get<double>();
     r.max_w = j.at("max_w").get<double>();
     r.force = j.at("total_contact_force").get<double>();
