@@ -75,9 +75,9 @@ struct PenaltyRun {
   double lambda1h = NAN;  // -eigen 1 only
   double max_w = 0, force = 0, max_m12 = 0, max_density = 0;
   // How far round-off moves max w and the force: the script's estimate from its last residual
-  // (penalty_hct.edp, region ff-roundoff), with the last step added where the last level stopped at
-  // round-off (region roundoff-stop), or where it makes none (the force from the penalty's
-  // integral) the worst case freefem_roundoff.
+  // (penalty_hct.edp, region ff-roundoff), or what the last step moved where that is larger and the
+  // run's last level stopped at round-off (region roundoff-stop), or where it makes none (the force
+  // from the penalty's integral) the worst case freefem_roundoff.
   double max_w_roundoff = 0, force_roundoff = 0;
   double residual = 0;  // of (2a) at the answer, relative
   std::vector<double> w_at;
