@@ -69,6 +69,7 @@ TEST(PenaltyFreeFem, RefusesBadArgumentsNamingThem) {
       {"-r nan", "-r"},              {"-continuation 3", "-continuation"},
       {"-eigen yes", "-eigen"},      {"-unknown 1", "-unknown"},    {"-tol", "-tol"},
       {"-kink-split 0", "-kink-split"}, {"-kink-split 2.5", "-kink-split"},
+      {"-start w.txt", "-start"},    {"-start-mesh m.msh", "-start-mesh"},
   };
   for (const auto& c : cases) {
     const Captured r = run_script(kPenalty, base + " " + c.args);
@@ -167,6 +168,29 @@ TEST(PenaltyFreeFem, CuttingTheCrossedSubTrianglesFollowsTheKink) {
   }
   EXPECT_EQ(clear[0].max_w, clear[1].max_w);
   EXPECT_EQ(clear[0].force, clear[1].force);
+}
+
+// A finer mesh started from a coarser one's solution (-save, -start, as crosscheck_penalty chains its
+// fixed-eps runs) must reach the same discrete solution as from w = 0, within the two runs'
+// round-off, and in fewer steps: the start is where (3a) begins, not what it solves. A start written
+// on another mesh than the one named is refused.
+TEST(PenaltyFreeFem, AStartFromACoarserMeshReachesTheSameSolutionSooner) {
+  const std::string args = "-scheme nonlinear -sampling disk -continuation 0 -tol 1e-13 -eps 1e-6 -eps-min 1e-6";
+  const std::string saved = scratch().path("coarse_w.txt");
+  const PenaltyRun coarse = penalty(1, args + " -save '" + saved + "'");
+  ASSERT_TRUE(coarse.converged) << coarse.why;
+  const PenaltyRun cold = penalty(2, args);
+  const PenaltyRun warm = penalty(2, args + " -start '" + saved + "' -start-mesh '" + mesh(1) + "'");
+  ASSERT_TRUE(cold.converged) << cold.why;
+  ASSERT_TRUE(warm.converged) << warm.why;
+  EXPECT_LT(warm.iterations, cold.iterations);
+  EXPECT_LE(std::abs(warm.max_w - cold.max_w), 2 * (warm.max_w_roundoff + cold.max_w_roundoff));
+  EXPECT_LE(std::abs(warm.force - cold.force), 2 * (warm.force_roundoff + cold.force_roundoff));
+  EXPECT_GT(std::abs(coarse.max_w - cold.max_w), 100 * cold.max_w_roundoff);  // the meshes' answers differ
+  const Captured r = run_script(kPenalty, "-mesh '" + mesh(2) + "' -points '" + points() + "' " + args + " -start '" + saved +
+                                              "' -start-mesh '" + mesh(2) + "' -out '" + scratch().path("mismatch.json") + "'");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("-start"), std::string::npos) << r.output;
 }
 
 // (3a) and (5a) solve the same discrete problem (2a): at one eps, stopped far below the difference

@@ -171,7 +171,8 @@ std::string eps_arg(double eps, double eps_min) {
 }
 std::string eps_arg(double eps) { return eps_arg(eps, eps); }
 
-// FreeFEM's way to the solution at one eps by (3a). From w = 0 its iterations grow as eps falls, so
+// FreeFEM's way to the solution at one eps by (3a) on the coarsest mesh of a chain (the finer ones
+// start from the mesh before, run_fixed_eps). From w = 0 its iterations grow as eps falls, so
 // an eps of 1e-8 or less (kPathFrom / 100) is reached by the levels 1e-6, 1e-8, ..., eps, each
 // started from the one before (penalty_hct.edp -continuation 2, whose header gives the counts); a
 // larger eps is solved from w = 0. The answer is the same discrete solution either way.
@@ -357,9 +358,11 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
   const Scene& sc = s.scene;
   const Scene ours = at_height(sc, sc.cylinder->height * (1 + s.perturb));
   // FreeFEM's runs (index k L + j: eps k, mesh j) and ours (-1: each grid's path of w_eps through
-  // the eps values, once) on s.jobs threads, the costliest first so that no long run starts last:
-  // FreeFEM's finest mesh from the smallest eps up (the slowest about half a minute here), then ours
-  // (about a minute), then the coarser meshes. A value's round-off: the floor of Newton's
+  // the eps values, once) on s.jobs threads. Each eps is a chain over FreeFEM's meshes, coarse to
+  // fine: the coarsest solved from w = 0 (one_eps), each finer one started from the one before it
+  // (penalty_hct.edp -save, -start): the same discrete solution in a third of the steps or fewer
+  // on the finest mesh. The chains go from the smallest eps up, the costliest first, with ours
+  // (about a minute) after the first. A value's round-off: the floor of Newton's
   // corrections (1e-12 of w, penalty_integral.cpp), and through the penalty eps^-1 times that over
   // the band where it acts.
   std::vector<RingGrading> gradings;
@@ -371,16 +374,21 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
   const size_t L = s.eps_levels.size();
   std::vector<PenaltyRun> ff_runs(s.eps_values.size() * L);
   std::vector<long> order;
-  for (size_t j = L; j-- > 0;) {
-    for (size_t k = s.eps_values.size(); k-- > 0;) order.push_back(static_cast<long>(k * L + j));
-    if (j + 1 == L) order.push_back(-1);
-  }
+  for (size_t k = s.eps_values.size(); k-- > 0;) order.push_back(static_cast<long>(k));
+  order.insert(order.begin() + std::min<size_t>(1, order.size()), -1);
   struct OurValues { std::vector<double> w, f, w_noise, f_noise; };
   std::vector<OurValues> our(s.eps_values.size());
   on_workers(s.jobs, order.size(), [&](size_t t) {
-    if (const long i = order[t]; i >= 0) {
-      ff_runs[i] = penalty(s, s.eps_levels[i % L], "-scheme nonlinear -sampling disk -tol 1e-13" + one_eps(s.eps_values[i / L]),
-                           sc.cylinder->height, gradings[i / L], quarter);
+    if (const long k = order[t]; k >= 0) {
+      const double eps = s.eps_values[k];
+      std::string start;
+      for (size_t j = 0; j < L; ++j) {
+        const std::string saved = s.work + "/w_eps" + std::to_string(k) + "_mesh" + std::to_string(j) + ".txt";
+        const std::string how = j == 0 ? one_eps(eps) : " -continuation 0" + eps_arg(eps) + start;
+        ff_runs[k * L + j] = penalty(s, s.eps_levels[j], "-scheme nonlinear -sampling disk -tol 1e-13" + how + " -save " + saved,
+                                     sc.cylinder->height, gradings[k], quarter);
+        start = " -start-mesh " + mesh(s, s.eps_levels[j], gradings[k], quarter) + " -start " + saved;
+      }
       return;
     }
     for (int n : s.eps_ns) {
