@@ -171,8 +171,9 @@ std::string eps_arg(double eps, double eps_min) {
 }
 std::string eps_arg(double eps) { return eps_arg(eps, eps); }
 
-// FreeFEM's way to the solution at one eps by (3a) on the coarsest mesh of a chain (the finer ones
-// start from the mesh before, run_fixed_eps). From w = 0 its iterations grow as eps falls, so
+// FreeFEM's way to the solution at one eps by (3a) from w = 0 (the rate's and Fig. 2's runs, and
+// the coarsest mesh of each fixed-eps chain, whose finer meshes start from the one before,
+// run_fixed_eps). From w = 0 its iterations grow as eps falls, so
 // an eps of 1e-8 or less (kPathFrom / 100) is reached by the levels 1e-6, 1e-8, ..., eps, each
 // started from the one before (penalty_hct.edp -continuation 2, whose header gives the counts); a
 // larger eps is solved from w = 0. The answer is the same discrete solution either way.
@@ -360,8 +361,8 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
   // FreeFEM's runs (index k L + j: eps k, mesh j) and ours (-1: each grid's path of w_eps through
   // the eps values, once) on s.jobs threads. Each eps is a chain over FreeFEM's meshes, coarse to
   // fine: the coarsest solved from w = 0 (one_eps), each finer one started from the one before it
-  // (penalty_hct.edp -save, -start): the same discrete solution in a third of the steps or fewer
-  // on the finest mesh. The chains go from the smallest eps up, the costliest first, with ours
+  // (penalty_hct.edp -save, -start): the same discrete solution in far fewer steps on the finest
+  // mesh. The chains go from the smallest eps up, the costliest first, with ours
   // (about a minute) after the first. A value's round-off: the floor of Newton's
   // corrections (1e-12 of w, penalty_integral.cpp), and through the penalty eps^-1 times that over
   // the band where it acts.
@@ -383,11 +384,15 @@ void run_fixed_eps(const Setup& s, EpsPart& part) {
       const double eps = s.eps_values[k];
       std::string start;
       for (size_t j = 0; j < L; ++j) {
+        // A start is only ever the one this chain just wrote: never a file an earlier run left.
         const std::string saved = s.work + "/w_eps" + std::to_string(k) + "_mesh" + std::to_string(j) + ".txt";
+        std::filesystem::remove(saved);
         const std::string how = j == 0 ? one_eps(eps) : " -continuation 0" + eps_arg(eps) + start;
-        ff_runs[k * L + j] = penalty(s, s.eps_levels[j], "-scheme nonlinear -sampling disk -tol 1e-13" + how + " -save " + saved,
+        ff_runs[k * L + j] = penalty(s, s.eps_levels[j], "-scheme nonlinear -sampling disk -tol 1e-13" + how + " -save " + shell_word(saved),
                                      sc.cylinder->height, gradings[k], quarter);
-        start = " -start-mesh " + mesh(s, s.eps_levels[j], gradings[k], quarter) + " -start " + saved;
+        // A run that did not converge ends its chain; the comparison below says which and why.
+        if (!ff_runs[k * L + j].converged) break;
+        start = " -start-mesh " + shell_word(mesh(s, s.eps_levels[j], gradings[k], quarter)) + " -start " + shell_word(saved);
       }
       return;
     }

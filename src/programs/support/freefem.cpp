@@ -16,13 +16,14 @@
 
 namespace plate {
 
-namespace {
 // One shell word: in single quotes, each quote inside closed, escaped and reopened.
-std::string quote(const std::string& s) {
+std::string shell_word(const std::string& s) {
   std::string q = "'";
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
 }
+
+namespace {
 
 std::string read_all(const std::string& path) {
   std::ifstream in(path);
@@ -33,7 +34,7 @@ std::string read_all(const std::string& path) {
 
 // Runs cmd, its output in log; throws, quoting the log, unless it exits with one of `accepted`.
 int run(const std::string& what, const std::string& cmd, const std::string& log, std::vector<int> accepted = {0}) {
-  const int raw = std::system((cmd + " > " + quote(log) + " 2>&1").c_str());
+  const int raw = std::system((cmd + " > " + shell_word(log) + " 2>&1").c_str());
   if (raw == -1 || !WIFEXITED(raw))
     throw std::runtime_error(what + " did not run to its end (killed by a signal?): " + cmd + "\n" + read_all(log));
   const int status = WEXITSTATUS(raw);
@@ -49,7 +50,7 @@ void gmsh_mesh(const std::string& geo, const std::vector<std::pair<std::string, 
   cmd.precision(17);
   cmd << "gmsh -2 -format msh22";
   for (const auto& [name, value] : numbers) cmd << " -setnumber " << name << " " << value;
-  cmd << " " << quote(geo) << " -o " << quote(msh);
+  cmd << " " << shell_word(geo) << " -o " << shell_word(msh);
   run("gmsh", cmd.str(), msh + ".log");
 }
 
@@ -64,7 +65,7 @@ std::string scene_args(const Scene& scene, const std::string& points_file) {
   const Cylinder& c = cylinder_of(scene);
   std::ostringstream args;
   args.precision(17);
-  args << "-points " << quote(points_file) << " -R " << c.height << " -cx " << c.cx << " -cy " << c.cy << " -r " << c.radius;
+  args << "-points " << shell_word(points_file) << " -R " << c.height << " -cx " << c.cx << " -cy " << c.cy << " -r " << c.radius;
   return args.str();
 }
 
@@ -93,7 +94,7 @@ nlohmann::json run_freefem(const std::string& edp, const std::string& msh, const
   std::remove(out_json.c_str());
   // Exit 3: the active set did not settle; the JSON says so ("converged": false), and the run
   // is reported as not certified rather than ending the whole check.
-  run("FreeFem++", "FreeFem++ -nw -v 0 " + quote(edp) + " -mesh " + quote(msh) + " " + args + " -out " + quote(out_json),
+  run("FreeFem++", "FreeFem++ -nw -v 0 " + shell_word(edp) + " -mesh " + shell_word(msh) + " " + args + " -out " + shell_word(out_json),
       out_json + ".log", {0, 3});
   const std::string text = read_all(out_json);
   if (text.empty()) throw std::runtime_error("FreeFem++ wrote no output to " + out_json);

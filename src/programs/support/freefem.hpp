@@ -35,6 +35,9 @@ bool circle_at_centre(const Scene& scene);
 // The check points, as the script's -points file wants them: their number, then "x y" each.
 void write_points(const std::string& path, const std::vector<std::pair<double, double>>& points);
 
+// A path as one shell word, for the "-name value" arguments below.
+std::string shell_word(const std::string& s);
+
 // FreeFEM: run the .edp on a mesh with extra "-name value" arguments, its JSON written to out_json
 // and parsed. Throws std::runtime_error if FreeFem++ fails, exits with an error other than 3 (not
 // settled: the JSON says "converged": false) or writes no JSON.
