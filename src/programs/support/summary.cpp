@@ -44,10 +44,8 @@ std::string line_force_csv(const Problem& p, const LineForce& f, const LineFigur
   if (f.spline_degree > 0) {  // a function of the angle (D12): its values at fixed angles, comparable across grids
     o << "# plate: the contact force per unit length q on the rim, the spline of the edge rows' multipliers (degree "
       << f.spline_degree << ", ";
-    if (f.laid_out()) {  // (D28): splines on the contact arcs, points elsewhere
-      size_t bases = 0;
-      for (const auto& c : f.arc_coefficients) bases += c.size();
-      o << bases << " bases on " << f.layout.arcs.size() << " arcs; off them the nearest of " << f.point_theta.size()
+    if (f.laid_out()) {  // (D28): splines on the contact arcs, points elsewhere; a row is one or the other
+      o << f.q.size() - f.point_theta.size() << " bases on " << f.layout.arcs.size() << " arcs; off them the nearest of " << f.point_theta.size()
         << " point rows)";
     } else {
       o << f.coefficients.size() << " knots)";
