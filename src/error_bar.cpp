@@ -17,6 +17,13 @@ ErrorBar error_bar(const std::vector<double>& values) {
   b.bar = b.order = NAN;
   b.basis = "none";
   if (values.size() < 2) return b;
+  if (std::all_of(values.begin(), values.end(), [&](double v) { return v == values.back(); })) {
+    // To the last bit on every grid, as a value fixed by the scene is (w at a clamped corner, no
+    // contact force where nothing touches): no change to measure, and nothing that swings.
+    b.bar = 0;
+    b.basis = "the same on every grid";
+    return b;
+  }
   const Extrapolation e = extrapolate(values);
   if (!e.orders.empty()) b.order = e.orders.back();
   const bool believable = b.order <= kLargestOrder;  // false for NaN: they swing, or are too few

@@ -14,7 +14,8 @@ struct ErrorBar {
   bool steady = false;   // the observed order is steady (richardson.hpp) over the last four grids
   double order = 0;      // the last observed order (NaN if none)
   double limit = 0;      // Richardson's limit (steady), else the finest value
-  std::string basis;     // "richardson", "last difference", "largest of the last two differences" or "none"
+  std::string basis;     // "richardson", "last difference", "largest of the last two differences",
+                         // "the same on every grid" or "none"
 };
 
 // Eq. (D29): values on grids h, h/2, h/4, ... (coarsest first). Steady: the finest value's
@@ -23,7 +24,7 @@ struct ErrorBar {
 // |v_h - v_2h|, which bounds the error of v_h if the differences shrink at least geometrically from
 // there on (nothing here can check that, so the report says "not steady"). Swinging (the last two
 // differences change sign, or the last one grew, or shrank faster than kLargestOrder allows): the
-// larger of the last two differences.
+// larger of the last two differences. Equal to the last bit on every grid: a bar of 0.
 ErrorBar error_bar(const std::vector<double>& values);
 
 // No space here converges faster than order 4 (bicubics, with or without the kink of D31). A last

@@ -224,6 +224,36 @@ TEST(Cli, DefaultsGiveACertifiedAnswer) {
     }
 }
 
+// Where a run has no error bar, it says why, and the n it suggests does give one: on the paper's
+// scene n = 8 is too coarse for the kink functions (D31), so n = 16 has no coarser grid of its own
+// space, and 32 has one. A value the scene fixes (a plate pushed down onto a floor peaks at 0, at its
+// clamped edge) carries a bar of 0 and is not called swinging.
+TEST(Cli, AnAnswerWithoutABarSaysWhyAndAFixedValueIsNotCalledSwinging) {
+  const std::string json = temp_path("bars.json");
+  std::filesystem::remove(json);
+  const PlateRun r16 = run_plate("-n 16 --json " + json);
+  ASSERT_EQ(r16.status, 0) << r16.output;
+  const auto j16 = read_json(json);
+  const std::string note = j16["error_bars"].value("note", "");
+  EXPECT_NE(note.find("n = 8 is solved in the plain space"), std::string::npos) << note;
+  EXPECT_NE(note.find("use n = 32 or more"), std::string::npos) << note;
+  EXPECT_NE(r16.output.find("error bar (continuum): none: " + note), std::string::npos) << r16.output;
+  const PlateRun r32 = run_plate("-n 32 --json " + json);
+  ASSERT_EQ(r32.status, 0) << r32.output;
+  EXPECT_EQ(read_json(json)["error_bars"]["grids"].size(), 2u) << r32.output;
+  const PlateRun odd = run_plate("-n 7 --json " + json);
+  ASSERT_EQ(odd.status, 0) << odd.output;
+  EXPECT_NE(read_json(json)["error_bars"].value("note", "").find("no coarser grid"), std::string::npos) << odd.output;
+  const PlateRun down = run_plate("-n 32 --load -2000 --obstacle -0.01 --json " + json);
+  ASSERT_EQ(down.status, 0) << down.output;
+  const auto jd = read_json(json);
+  EXPECT_EQ(jd["max_w"].get<double>(), 0.0) << down.output;
+  EXPECT_EQ(jd["error_bars"]["max w"]["basis"], "the same on every grid") << jd.dump();
+  EXPECT_EQ(jd["error_bars"]["max w"]["bar"].get<double>(), 0.0) << jd.dump();
+  EXPECT_NE(down.output.find("max w = 0 +- 0  (the same value on every grid"), std::string::npos) << down.output;
+  EXPECT_NE(jd["error_bars"]["min w"]["basis"], "the same on every grid") << jd.dump();
+}
+
 // Outputs are written whole (a temporary file renamed over the path), so a path that is not a
 // regular file or a new one is refused by name before any solve: a symbolic link (the rename would
 // replace it), a device, a FIFO. An existing file keeps its permissions when it is replaced.

@@ -130,3 +130,18 @@ TEST(ErrorBar, HoldsTheErrorOfASteadySequenceAndSaysWhenItIsNotSteady) {
   EXPECT_NEAR(fast.order, 7, 1e-6);
   EXPECT_EQ(error_bar({1.0}).basis, "none");
 }
+
+// A value the scene fixes (w at a clamped corner, a force of 0 where nothing touches) is the same to
+// the last bit on every grid. It has nothing to estimate and does not swing; one bit apart it is
+// judged like any other sequence.
+TEST(ErrorBar, AValueEqualOnEveryGridHasNoBarAndIsNotCalledSwinging) {
+  const ErrorBar same = error_bar({0.0, 0.0, 0.0, 0.0});
+  EXPECT_EQ(same.basis, "the same on every grid");
+  EXPECT_EQ(same.bar, 0.0);
+  EXPECT_FALSE(same.steady);
+  EXPECT_EQ(error_bar({0.0625, 0.0625}).basis, "the same on every grid");
+  const double next = std::nextafter(0.0625, 1.0);
+  const ErrorBar apart = error_bar({0.0625, 0.0625, 0.0625, next});
+  EXPECT_NE(apart.basis, "the same on every grid");
+  EXPECT_GT(apart.bar, 0.0);
+}

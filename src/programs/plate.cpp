@@ -458,19 +458,30 @@ void set_error_bars(Run& r, const std::vector<plate::ExactLevel>& levels) {
   using namespace plate;
   if (!r.estimate) return;
   std::vector<const ExactLevel*> use;
+  std::string stop;  // why the grids below the coarsest used were not used, if any were solved
   for (auto it = levels.rbegin(); it != levels.rend() && use.size() < 4; ++it) {
     // Grids of one space only: a coarser grid that (D31) did not fit converges otherwise.
-    if (!use.empty() && it->enriched != use.back()->enriched && use.size() < 4) {
+    if (!use.empty() && it->enriched != use.back()->enriched) {
       r.report.bar_grids_note = "the coarser grids, which the kink functions (D31) do not fit, were solved in the plain space and are left out";
+      stop = "n = " + std::to_string(it->cells) + " is solved in the plain space, since the kink functions (D31) do not fit it; use n = " +
+             std::to_string(2 * use.front()->cells) + " or more";
       break;
     }
-    if (!it->measures || !it->certified || (!use.empty() && 2 * it->cells != use.back()->cells)) break;
+    if (!it->measures || !it->certified || (!use.empty() && 2 * it->cells != use.back()->cells)) {
+      stop = !it->certified ? "the grid n = " + std::to_string(it->cells) + " of the sequence is not certified"
+                            : "the grid n = " + std::to_string(it->cells) + " of the sequence was not measured";
+      break;
+    }
     use.push_back(&*it);
   }
   std::reverse(use.begin(), use.end());
   if (use.size() < 2) {
-    r.report.bar_note = r.exact_opt.nested ? "the grid sequence has no certified coarser grid (use n = 16, 32, ... or more)"
-                                           : "--no-nested solves no coarser grid";
+    // No coarser grid at all: sequencing halves n while it stays even and at least ExactOptions::coarsest.
+    if (stop.empty())
+      stop = r.exact_opt.nested ? "the grid sequence has no coarser grid (it halves the grid while both sides have an even number of cells and n / 2 is at least " +
+                                      std::to_string(r.exact_opt.coarsest) + ")"
+                                : "--no-nested solves no coarser grid";
+    r.report.bar_note = stop;
     return;
   }
   for (const auto* l : use) r.report.bar_grids.push_back(l->cells);
