@@ -17,10 +17,10 @@ void check_obstacle_on_boundary(const Grid& g, const Field& obstacle) {
     if (!(v < 0.0)) {
       std::ostringstream m;
       if (std::isnan(v)) {
-        m << "obstacle is not a number (NaN) at the boundary point (" << x << ", " << y << ")";
+        m << "--obstacle: not a number (NaN) at the boundary point (" << x << ", " << y << ")";
         throw std::invalid_argument(m.str());
       }
-      m << "obstacle must be below zero on the boundary (the plate is clamped at w = 0 there), "
+      m << "--obstacle: must be below zero on the boundary (the plate is clamped at w = 0 there), "
         << "but phi(" << x << ", " << y << ") = " << v;
       throw std::invalid_argument(m.str());
     }
@@ -65,7 +65,7 @@ double on_edge(const Field& obstacle, const EdgePoints& e, int k, double h) {
 void check_obstacle_value(double x, double y, double v) {
   if (std::isnan(v) || v == INFINITY) {
     std::ostringstream m;
-    m << "obstacle must be a number or -inf (no constraint), but phi(" << x << ", " << y << ") = " << v;
+    m << "--obstacle: must be a number or -inf (no constraint), but phi(" << x << ", " << y << ") = " << v;
     throw std::invalid_argument(m.str());
   }
 }
@@ -179,10 +179,24 @@ void attach_kink(Problem& p, const KinkEnrichment& e) {
   if (p.M.size()) p.M = sampling_mass(p);
 }
 
+std::string overflow_risk(const Problem& p) {
+  double phi = 0;
+  for (double v : p.phi)
+    if (std::isfinite(v)) phi = std::max(phi, std::abs(v));
+  double k = 0;
+  for (Eigen::Index c = 0; c < p.K.outerSize(); ++c)
+    for (SpMat::InnerIterator it(p.K, c); it; ++it) k = std::max(k, std::abs(it.value()));
+  if (std::isfinite(36 * k * phi)) return "";
+  std::ostringstream m;
+  m << "--obstacle-height (or --obstacle): the obstacle reaches |phi| = " << phi << ", where K w (36 terms of up to " << k
+    << " times that) may overflow double precision; state the problem in other units";
+  return m.str();
+}
+
 Problem make_problem(const Scene& s, const Grid& g, const SamplingSpec& spec) {
   Problem p = make_samples(s, g, spec);
   p.K = assemble_matrix(g, bfs_stiffness(g.h));
-  p.F = assemble_load(g, s.load, "load");
+  p.F = assemble_load(g, s.load, "--load");
   // (D31) on every grid it fits; a coarser grid of a sequence that it does not fit is plain.
   if (kink_on(g, s, spec)) {
     attach_kink(p, make_kink_enrichment(g, s.edge, spline_knots(s.edge.r, g.h, rows_on(g, s, spec))));

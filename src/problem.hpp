@@ -1,6 +1,7 @@
 // One discrete obstacle problem: the grid, the sampling of the constraint, the obstacle at the
 // sample points, and the assembled stiffness, mass and load. Built once, solved many times.
 #pragma once
+#include <string>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -46,6 +47,13 @@ struct Problem {
 // obstacle that is not below zero on the boundary (then no clamped plate can satisfy w >= phi), and
 // for a grid that does not cover the scene's rectangle.
 Problem make_problem(const Scene& s, const Grid& g, const SamplingSpec& spec);
+
+// Why p's solve may have failed by overflow, or "" if it cannot have: an obstacle so high that K w
+// overflows turns every later step to inf or NaN, and the solver then reports a failure of another
+// kind (the cylinder with R = 1e307 at n = 64: "the constraints cannot all hold"). A row of K has 36
+// terms (a node and its eight neighbours, four unknowns each), each up to max |K| max |phi|; the
+// bound is pessimistic (R = 1e305 solves there), so it only explains a failure, never refuses a run.
+std::string overflow_risk(const Problem& p);
 // The grid, its sampling and the obstacle at the samples, without K, M and F: what the reports of
 // a solve on part of the plate read on the whole (mirror.hpp). Validates as make_problem does.
 Problem make_samples(const Scene& s, const Grid& g, const SamplingSpec& spec);

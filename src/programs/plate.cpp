@@ -629,6 +629,8 @@ Outputs solve_grid(const Options& o, Run& r, plate::SceneSolution& scene, plate:
     result = solve_penalty(r, *r.penalised, xi, progress);
   }
   const Problem& problem = exact ? scene.whole() : *r.penalised;
+  if (!result.converged)
+    if (const std::string why = overflow_risk(exact ? scene.solved : *r.penalised); !why.empty()) throw std::invalid_argument(why);
   // Everything the outputs state of the answer, once: the exact solver measured its own (the field's
   // extremes, w at the points, the force) as it solved every grid; the penalty's are measured here.
   r.report.violation = constraint_violation(problem, result.w);
@@ -655,6 +657,14 @@ Outputs solve_grid(const Options& o, Run& r, plate::SceneSolution& scene, plate:
   r.report.nodes = &nodes;
   r.report.seconds_total = seconds_since(t0);
   r.report.converged = result.converged, r.report.message = result.message;
+  // A converged answer too large for a double (R = 1e306 gives a force of about 6e308) would be
+  // written as nulls with exit 0. (A run that did not converge says so, and exits 3.)
+  if (result.converged)
+    for (const auto& [name, v] : {std::pair<const char*, double>{"max w", r.report.measures.max_w.value}, {"min w", r.report.measures.min_w.value},
+                                {"the total contact force", r.report.total_force}, {"max |m12|", r.report.measures.max_abs_m12.value}})
+      if (!std::isfinite(v))
+        throw std::invalid_argument(std::string("--obstacle-height, --obstacle or --load: ") + name + " = " + fmt("%g", v) +
+                                    ": the answer overflows double precision; state the problem in other units");
   return {o.csv_path.empty() ? "" : bounds_header(r.report) + nodal_csv(nodes), o.json_path.empty() ? "" : summary_json(r.report),
           o.line_csv_path.empty() ? "" : line_force_csv(problem, r.report.line, r.report.line_figures),
           o.quiet ? "" : summary_text(r.report)};
