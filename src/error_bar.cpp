@@ -47,4 +47,19 @@ ErrorBar error_bar(const std::vector<double>& values) {
 }
 // @end error-bar
 
+// @region error-bar-across
+// Eq. (D29) across two spaces: the finest grid in one, the coarser ones in the other (the kink
+// functions of (D31) fit the finest grid alone). v_h's distance to the plate's answer is at most
+// |v_h - v_2h| + |v_2h - v|, and the second is the coarser space's own bar.
+ErrorBar error_bar_across(double finest, const std::vector<double>& coarser) {
+  const ErrorBar below = error_bar(coarser);
+  ErrorBar b;
+  b.value = b.limit = finest;
+  b.order = NAN;
+  b.bar = below.basis == "none" ? NAN : std::abs(finest - coarser.back()) + below.bar;
+  b.basis = below.basis == "none" ? "none" : "last difference across the spaces";
+  return b;
+}
+// @end error-bar-across
+
 }  // namespace plate

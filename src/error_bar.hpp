@@ -15,7 +15,7 @@ struct ErrorBar {
   double order = 0;      // the last observed order (NaN if none)
   double limit = 0;      // Richardson's limit (steady), else the finest value
   std::string basis;     // "richardson", "last difference", "largest of the last two differences",
-                         // "the same on every grid" or "none"
+                         // "the same on every grid", "last difference across the spaces" or "none"
 };
 
 // Eq. (D29): values on grids h, h/2, h/4, ... (coarsest first). Steady: the finest value's
@@ -26,6 +26,11 @@ struct ErrorBar {
 // differences change sign, or the last one grew, or shrank faster than kLargestOrder allows): the
 // larger of the last two differences. Equal to the last bit on every grid: a bar of 0.
 ErrorBar error_bar(const std::vector<double>& values);
+
+// The bar of a value v_h on a grid whose space the coarser grids do not share (D31 fits the finest
+// grid alone): |v_h - v_2h| plus the bar of v_2h from the coarser grids' values (coarsest first,
+// ending with v_2h); none if they give none. Never steady.
+ErrorBar error_bar_across(double finest, const std::vector<double>& coarser);
 
 // No space here converges faster than order 4 (bicubics, with or without the kink of D31). A last
 // difference 2^6 times smaller than the one before says that two grids' values happened to land

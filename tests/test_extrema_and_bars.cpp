@@ -145,3 +145,17 @@ TEST(ErrorBar, AValueEqualOnEveryGridHasNoBarAndIsNotCalledSwinging) {
   EXPECT_NE(apart.basis, "the same on every grid");
   EXPECT_GT(apart.bar, 0.0);
 }
+
+// Across two spaces the bar is the triangle inequality: the finest value's step from the grid before
+// plus that grid's own bar from the coarser space's sequence; none where that sequence gives none.
+TEST(ErrorBar, AcrossTwoSpacesTheStepIsAddedToTheCoarserBar) {
+  const std::vector<double> coarser{1.0, 1.1, 1.15, 1.16};
+  const ErrorBar below = error_bar(coarser);
+  const ErrorBar b = error_bar_across(1.1605, coarser);
+  EXPECT_EQ(b.basis, "last difference across the spaces");
+  EXPECT_FALSE(b.steady);
+  EXPECT_EQ(b.value, 1.1605);
+  EXPECT_NEAR(b.bar, 0.0005 + below.bar, 1e-15);
+  EXPECT_EQ(error_bar_across(1.0, {1.1}).basis, "none");
+  EXPECT_TRUE(std::isnan(error_bar_across(1.0, {1.1}).bar));
+}

@@ -84,3 +84,26 @@ TEST(ErrorBar, LiftOffBarHoldsAFinerAnswer) {
   EXPECT_GE(b["bar"].get<double>(), std::abs(coarse["max_w"].get<double>() - fine["max_w"].get<double>()));
   EXPECT_EQ(coarse["error_bars"]["grids"].size(), 4u);
 }
+
+// With the cylinder 0.05 from the clamped edge, the kink functions (D31) fit n = 128 but none of the
+// coarser grids (they need four cells there), so n = 128 is the only grid of its space. Its bar is
+// then its step from n = 64 plus the bar of n = 64 from the plain grids 8 ... 64. There the plate
+// lifts off part of the rim and the series refuses the scene, so the bar must hold the distance to
+// n = 256's answer (which has n = 128 in its space), widened by that answer's own bar; the JSON says
+// how it was found.
+TEST(ErrorBar, AGridAloneInItsSpaceTakesItsBarFromTheCoarserSpace) {
+  const nlohmann::json j = run_json("-n 128 --centre 0.3,0.5"), fine = run_json("-n 256 --centre 0.3,0.5");
+  ASSERT_NE(j["model"]["space"].get<std::string>().find("(D31)"), std::string::npos) << j.dump();
+  EXPECT_EQ(j["error_bars"]["grids"].size(), 5u) << j["error_bars"].dump();
+  EXPECT_NE(j["error_bars"]["grids_note"].get<std::string>().find("n = 128 carries the kink"), std::string::npos);
+  for (const auto& [key, field] : {std::pair{"max w", "max_w"}, {"total contact force", "total_contact_force"}}) {
+    const nlohmann::json& b = j["error_bars"][key];
+    EXPECT_EQ(b["basis"], "last difference across the spaces") << key;
+    EXPECT_FALSE(b["steady"].get<bool>()) << key;
+    const nlohmann::json& f = fine["error_bars"][key];
+    ASSERT_NE(f["basis"], "last difference across the spaces") << key;  // n = 256 has n = 128 in its space
+    const double apart = std::abs(j[field].get<double>() - fine[field].get<double>()) + f["bar"].get<double>();
+    std::printf("%s: n = 128 to n = 256 and its bar %.2e, n = 128's bar %.2e\n", key, apart, b["bar"].get<double>());
+    EXPECT_GE(b["bar"].get<double>(), apart) << key;
+  }
+}

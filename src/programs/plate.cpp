@@ -453,30 +453,40 @@ Config echo(const CLI::App& app, const Options& o, const std::string& header, co
 }
 
 // Error bars from the last four grids of the sequence (or three, or two), each certified and each
-// with half the cells of the next; none, with the reason, otherwise.
+// with half the cells of the next, all in one space; where the finest grid is the only one its
+// space (D31) fits, from the coarser grids of the other space and the step to the finest; none,
+// with the reason, otherwise.
 void set_error_bars(Run& r, const std::vector<plate::ExactLevel>& levels) {
   using namespace plate;
   if (!r.estimate) return;
-  std::vector<const ExactLevel*> use;
+  std::vector<const ExactLevel*> use, below;  // the finest grid's space; the other's, below it
   std::string stop;  // why the grids below the coarsest used were not used, if any were solved
   for (auto it = levels.rbegin(); it != levels.rend() && use.size() < 4; ++it) {
-    // Grids of one space only: a coarser grid that (D31) did not fit converges otherwise.
-    if (!use.empty() && it->enriched != use.back()->enriched) {
+    // Grids of one space only: a coarser grid that (D31) did not fit converges otherwise. Where the
+    // finest grid has its space to itself, the other space's grids below it serve instead.
+    const bool same = use.empty() || it->enriched == use.back()->enriched;
+    if (!same && use.size() > 1) {
       r.report.bar_grids_note = "the coarser grids, which the kink functions (D31) do not fit, were solved in the plain space and are left out";
-      stop = "n = " + std::to_string(it->cells) + " is solved in the plain space, since the kink functions (D31) do not fit it; use n = " +
-             std::to_string(2 * use.front()->cells) + " or more";
       break;
     }
-    if (!it->measures || !it->certified || (!use.empty() && 2 * it->cells != use.back()->cells)) {
+    std::vector<const ExactLevel*>& into = same && below.empty() ? use : below;
+    if (into.size() == 4) break;
+    const ExactLevel* above = !into.empty() ? into.back() : !use.empty() ? use.back() : nullptr;
+    if (!it->measures || !it->certified || (above && 2 * it->cells != above->cells)) {
       stop = !it->certified ? "the grid n = " + std::to_string(it->cells) + " of the sequence is not certified"
                             : "the grid n = " + std::to_string(it->cells) + " of the sequence was not measured";
       break;
     }
-    use.push_back(&*it);
+    into.push_back(&*it);
   }
   std::reverse(use.begin(), use.end());
-  if (use.size() < 2) {
+  std::reverse(below.begin(), below.end());
+  const bool across = use.size() == 1 && below.size() >= 2;
+  if (use.size() < 2 && !across) {
     // No coarser grid at all: sequencing halves n while it stays even and at least ExactOptions::coarsest.
+    if (stop.empty() && below.size() == 1)
+      stop = "n = " + std::to_string(below[0]->cells) + " is solved in the plain space, since the kink functions (D31) do not fit it; use n = " +
+             std::to_string(2 * use[0]->cells) + " or more";
     if (stop.empty())
       stop = r.exact_opt.nested ? "the grid sequence has no coarser grid (it halves the grid while both sides have an even number of cells and n / 2 is at least " +
                                       std::to_string(r.exact_opt.coarsest) + ")"
@@ -484,11 +494,17 @@ void set_error_bars(Run& r, const std::vector<plate::ExactLevel>& levels) {
     r.report.bar_note = stop;
     return;
   }
+  if (across)
+    r.report.bar_grids_note = "n = " + std::to_string(use[0]->cells) + " carries the kink (D31), which the coarser grids do not fit: each bar is its step from n = " +
+                              std::to_string(below.back()->cells) + " plus that grid's own bar";
+  if (across)
+    for (const auto* l : below) r.report.bar_grids.push_back(l->cells);
   for (const auto* l : use) r.report.bar_grids.push_back(l->cells);
   auto add = [&](const std::string& name, auto get) {
-    std::vector<double> v;
+    std::vector<double> v, c;
     for (const auto* l : use) v.push_back(get(*l));
-    r.report.bars.emplace_back(name, error_bar(v));
+    for (const auto* l : below) c.push_back(get(*l));
+    r.report.bars.emplace_back(name, across ? error_bar_across(v.back(), c) : error_bar(v));
   };
   add("max w", [](const ExactLevel& l) { return l.measures->max_w.value; });
   add("min w", [](const ExactLevel& l) { return l.measures->min_w.value; });

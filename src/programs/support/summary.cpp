@@ -158,6 +158,7 @@ std::string error_bars_text(const Report& r) {
     else if (b.basis == "last difference")
       o << "NOT STEADY: the last difference" << (std::isfinite(b.order) ? ", order " + fmt("%.2f", b.order) : std::string(", one grid before"));
     else if (b.basis == "the same on every grid") o << "the same value on every grid: nothing changes with h";
+    else if (b.basis == "last difference across the spaces") o << "NOT STEADY: the step from the grid before, plus that grid's own bar";
     else if (b.basis != "none") o << "NOT STEADY: the values swing, or close faster than any order here; the larger of the last two differences";
     else o << "none";
     o << ")\n";
