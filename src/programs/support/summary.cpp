@@ -257,7 +257,8 @@ std::string summary_text(const Report& r) {
         << " (points: " << summary_value(r.line_figures.q0) << ", " << summary_value(r.line_figures.q45) << ")";
     o << "\n";
     if (std::isfinite(r.dip_below_edge))
-      o << "  between the rows the plate dips at most " << summary_value(r.dip_below_edge) << " below the edge (points h/32 apart)\n";
+      o << "  between the rows the plate dips at most " << summary_value(r.dip_below_edge) << " below the edge (points h/32 apart)"
+        << (r.dip_below_edge > 0 ? ": w_h is at least that far from the plate's answer there, which keeps above the obstacle" : "") << "\n";
     if (!l.fourier.empty() && l.spline_degree == 0) {
       o << "  fit q(theta) ~";
       for (size_t k = 0; k < l.fourier.size(); ++k) o << (k ? " + " : " ") << summary_value(l.fourier[k]) << (k ? " cos " + std::to_string(4 * k) + " theta" : "");
