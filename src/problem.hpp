@@ -1,8 +1,8 @@
 // One discrete obstacle problem: the grid, the sampling of the constraint, the obstacle at the
 // sample points, and the assembled stiffness, mass and load. Built once, solved many times.
 #pragma once
-#include <string>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 

@@ -483,7 +483,8 @@ void set_error_bars(Run& r, const std::vector<plate::ExactLevel>& levels) {
   std::reverse(below.begin(), below.end());
   const bool across = use.size() == 1 && below.size() >= 2;
   if (use.size() < 2 && !across) {
-    // No coarser grid at all: sequencing halves n while it stays even and at least ExactOptions::coarsest.
+    // Why not: a grid below was not certified (stop), a single grid of the other space, or no
+    // coarser grid at all (sequencing halves n while it stays even and at least coarsest).
     if (stop.empty() && below.size() == 1)
       stop = "n = " + std::to_string(below[0]->cells) + " is solved in the plain space, since the kink functions (D31) do not fit it; use n = " +
              std::to_string(2 * use[0]->cells) + " or more";
