@@ -254,6 +254,25 @@ TEST(Cli, AnAnswerWithoutABarSaysWhyAndAFixedValueIsNotCalledSwinging) {
   EXPECT_NE(jd["error_bars"]["min w"]["basis"], "the same on every grid") << jd.dump();
 }
 
+// The plate's own answer keeps above the obstacle, so a dip below it between rows is a distance of
+// w_h from that answer. Rows eight to the circle (--edge-rows spline:3,50 at n = 64: the same rows on
+// every grid of the sequence) let the plate dip 5e-4 while the grids agree on max w to 4e-8, and max
+// w is 1e-4 off: the run must say that the dip exceeds its bars. The default rows dip far less than
+// the bars and say nothing.
+TEST(Cli, ADipBelowTheObstacleBeyondTheBarsIsAWarning) {
+  const std::string json = temp_path("dip.json");
+  const PlateRun coarse_rows = run_plate("-n 64 --edge-rows spline:3,50 --json " + json);
+  ASSERT_EQ(coarse_rows.status, 0) << coarse_rows.output;
+  const auto j = read_json(json);
+  EXPECT_TRUE(j.value("dip_beyond_w_bars", false)) << j.dump();
+  EXPECT_GT(j["dip_below_edge"].get<double>(), j["error_bars"]["max w"]["bar"].get<double>());
+  EXPECT_NE(coarse_rows.output.find("WARNING: between the rows the plate dips"), std::string::npos) << coarse_rows.output;
+  const PlateRun fine_rows = run_plate("-n 64 --json " + json);
+  ASSERT_EQ(fine_rows.status, 0) << fine_rows.output;
+  EXPECT_FALSE(read_json(json).value("dip_beyond_w_bars", true));
+  EXPECT_EQ(fine_rows.output.find("WARNING"), std::string::npos) << fine_rows.output;
+}
+
 // Outputs are written whole (a temporary file renamed over the path), so a path that is not a
 // regular file or a new one is refused by name before any solve: a symbolic link (the rename would
 // replace it), a device, a FIFO. An existing file keeps its permissions when it is replaced.

@@ -143,6 +143,24 @@ Json error_bars_json(const Report& r) {
 }
 }  // namespace
 
+namespace {
+// The largest error bar on a value of w (max w, min w, w at a point), or -1 if there is none. The
+// plate's own answer keeps above the obstacle, so a dip below it between rows is a distance of w_h
+// from that answer: a dip beyond every such bar says the rows resolve the constraint more coarsely
+// than the bars say the values are resolved (--edge-rows spline:3,50 at n = 64 dips 5e-4 with a bar
+// of 4e-8 on max w, which is 1e-4 off).
+double largest_w_bar(const Report& r) {
+  double largest = -1;
+  for (const auto& [name, b] : r.bars)
+    if ((name == "max w" || name == "min w" || name.rfind("w(", 0) == 0) && std::isfinite(b.bar)) largest = std::max(largest, b.bar);
+  return largest;
+}
+bool dip_beyond_bars(const Report& r) {
+  const double largest = largest_w_bar(r);
+  return std::isfinite(r.dip_below_edge) && largest >= 0 && r.dip_below_edge > largest;
+}
+}  // namespace
+
 std::string error_bars_text(const Report& r) {
   std::ostringstream o;
   if (r.bars.empty()) {
@@ -210,6 +228,7 @@ std::string summary_json(const Report& r) {
   j["error_bars"] = error_bars_json(r);
   j["refinement"] = numbers(r.refinement);
   j["refinement_undone"] = r.refinement_undone > 0 ? number(r.refinement_undone) : nullptr;
+  j["dip_beyond_w_bars"] = dip_beyond_bars(r);
   j["contact_nodes"] = Json::array();
   for (int k : e.contact) j["contact_nodes"].push_back({number(f.x[k]), number(f.y[k])});
   if (r.lambda1h > 0)
@@ -266,6 +285,10 @@ std::string summary_text(const Report& r) {
     }
   }
   o << error_bars_text(r);
+  if (dip_beyond_bars(r))
+    o << "WARNING: between the rows the plate dips " << summary_value(r.dip_below_edge) << " below the obstacle, more than any error bar on w ("
+      << fmt("%.2g", largest_w_bar(r)) << "): w_h is at least that far from the plate's answer there, so the rows resolve the constraint more coarsely "
+         "than the bars suggest (the default --edge-rows, or a larger n)\n";
   if (r.certificate) {
     const Certificate& c = *r.certificate;
     o << "certificate (discrete: the distance to the discrete answer; relative): violation " << summary_value(c.violation) << ", negative multiplier "
