@@ -24,7 +24,8 @@ struct ErrorBar {
 // |v_h - v_2h|, which bounds the error of v_h if the differences shrink at least geometrically from
 // there on (nothing here can check that, so the report says "not steady"). Swinging (the last two
 // differences change sign, or the last one grew, or shrank faster than kLargestOrder allows): the
-// larger of the last two differences. Equal to the last bit on every grid: a bar of 0.
+// larger of the last two differences. Equal to the last bit on every grid: a bar of 0, which holds
+// only if the scene fixes the value (the output says so).
 ErrorBar error_bar(const std::vector<double>& values);
 
 // The bar of a value v_h on a grid whose space the coarser grids do not share (D31 fits the finest

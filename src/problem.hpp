@@ -51,8 +51,10 @@ Problem make_problem(const Scene& s, const Grid& g, const SamplingSpec& spec);
 // Why p's solve may have failed by overflow, or "" if it cannot have: an obstacle so high that K w
 // overflows turns every later step to inf or NaN, and the solver then reports a failure of another
 // kind (the cylinder with R = 1e307 at n = 64: "the constraints cannot all hold"). A row of K has 36
-// terms (a node and its eight neighbours, four unknowns each), each up to max |K| max |phi|; the
-// bound is pessimistic (R = 1e305 solves there), so it only explains a failure, never refuses a run.
+// terms (a node and its eight neighbours, four unknowns each), each up to max |K| max |phi|. The
+// bound is pessimistic, so plate asks it only after a solve that failed, and then names the obstacle
+// whatever the failure was: above about 1e301 / n^2 nothing else is worth suspecting. (The load is
+// not bounded here: a converged answer with an output that is not finite is refused on its own.)
 std::string overflow_risk(const Problem& p);
 // The grid, its sampling and the obstacle at the samples, without K, M and F: what the reports of
 // a solve on part of the plate read on the whole (mirror.hpp). Validates as make_problem does.

@@ -147,15 +147,18 @@ TEST(ErrorBar, AValueEqualOnEveryGridHasNoBarAndIsNotCalledSwinging) {
 }
 
 // Across two spaces the bar is the triangle inequality: the finest value's step from the grid before
-// plus that grid's own bar from the coarser space's sequence; none where that sequence gives none.
+// plus that grid's own bar from the coarser space's sequence; none where that sequence gives none,
+// and a value the same on every grid of both is marked as such.
 TEST(ErrorBar, AcrossTwoSpacesTheStepIsAddedToTheCoarserBar) {
+  // Increments 0.1, 0.05, 0.01 (orders 1 and 2.3, not steady): the coarser bar is the last, 0.01.
   const std::vector<double> coarser{1.0, 1.1, 1.15, 1.16};
-  const ErrorBar below = error_bar(coarser);
   const ErrorBar b = error_bar_across(1.1605, coarser);
   EXPECT_EQ(b.basis, "last difference across the spaces");
   EXPECT_FALSE(b.steady);
   EXPECT_EQ(b.value, 1.1605);
-  EXPECT_NEAR(b.bar, 0.0005 + below.bar, 1e-15);
+  EXPECT_NEAR(b.bar, 0.0005 + 0.01, 1e-12);
+  EXPECT_EQ(error_bar_across(0.0, {0.0, 0.0, 0.0}).basis, "the same on every grid");
+  EXPECT_NE(error_bar_across(1e-300, {0.0, 0.0, 0.0}).basis, "the same on every grid");
   EXPECT_EQ(error_bar_across(1.0, {1.1}).basis, "none");
   EXPECT_TRUE(std::isnan(error_bar_across(1.0, {1.1}).bar));
 }

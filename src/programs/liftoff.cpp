@@ -130,6 +130,7 @@ std::string bar_cell(const ErrorBar& b) {
   if (b.steady) how = words("liftoff.bar_richardson", {{"order", fmt("%.2f", b.order)}});
   else if (b.basis == "last difference") how = words("liftoff.bar_last");
   else if (b.basis == "largest of the last two differences") how = words("liftoff.bar_largest_two");
+  else if (b.basis == "the same on every grid") how = words("liftoff.bar_same");
   else throw std::logic_error("liftoff: no words for an error bar found by '" + b.basis + "'");
   return "± " + fmt_up(b.bar) + " (" + how + ")";
 }

@@ -453,9 +453,9 @@ Config echo(const CLI::App& app, const Options& o, const std::string& header, co
 }
 
 // Error bars from the last four grids of the sequence (or three, or two), each certified and each
-// with half the cells of the next, all in one space; where the finest grid is the only one its
-// space (D31) fits, from the coarser grids of the other space and the step to the finest; none,
-// with the reason, otherwise.
+// with half the cells of the next, all in one space. Where the kink functions (D31) fit the finest
+// grid alone, from the plain space's grids below it and the step to the finest. None otherwise,
+// with the reason.
 void set_error_bars(Run& r, const std::vector<plate::ExactLevel>& levels) {
   using namespace plate;
   if (!r.estimate) return;
@@ -473,8 +473,8 @@ void set_error_bars(Run& r, const std::vector<plate::ExactLevel>& levels) {
     if (into.size() == 4) break;
     const ExactLevel* above = !into.empty() ? into.back() : !use.empty() ? use.back() : nullptr;
     if (!it->measures || !it->certified || (above && 2 * it->cells != above->cells)) {
-      stop = !it->certified ? "the grid n = " + std::to_string(it->cells) + " of the sequence is not certified"
-                            : "the grid n = " + std::to_string(it->cells) + " of the sequence was not measured";
+      const std::string grid = "the grid n = " + std::to_string(it->cells) + " of the sequence ";
+      stop = grid + (!it->certified ? "is not certified" : !it->measures ? "was not measured" : "does not have half the cells of the next");
       break;
     }
     into.push_back(&*it);
@@ -485,21 +485,24 @@ void set_error_bars(Run& r, const std::vector<plate::ExactLevel>& levels) {
   if (use.size() < 2 && !across) {
     // Why not: a grid below was not certified (stop), a single grid of the other space, or no
     // coarser grid at all (sequencing halves n while it stays even and at least coarsest).
-    if (stop.empty() && below.size() == 1)
+    if (stop.empty() && below.size() == 1) {  // then use holds the finest grid alone
+      const int n = use[0]->cells;
       stop = "n = " + std::to_string(below[0]->cells) + " is solved in the plain space, since the kink functions (D31) do not fit it; use n = " +
-             std::to_string(2 * use[0]->cells) + " or more";
+             std::to_string(2 * n) + ", " + std::to_string(4 * n) + ", ...";
+    }
     if (stop.empty())
-      stop = r.exact_opt.nested ? "the grid sequence has no coarser grid (it halves the grid while both sides have an even number of cells and n / 2 is at least " +
-                                      std::to_string(r.exact_opt.coarsest) + ")"
+      stop = r.exact_opt.nested ? "the grid sequence has no coarser grid: it halves the grid it solves (with --symmetry auto, the part the mirror lines "
+                                  "leave) while both its sides have an even number of cells and n / 2 is at least " +
+                                      std::to_string(r.exact_opt.coarsest) + "; n = 16, 32, 64, ... always have one"
                                 : "--no-nested solves no coarser grid";
     r.report.bar_note = stop;
     return;
   }
-  if (across)
+  if (across) {
     r.report.bar_grids_note = "n = " + std::to_string(use[0]->cells) + " carries the kink (D31), which the coarser grids do not fit: each bar is its step from n = " +
                               std::to_string(below.back()->cells) + " plus that grid's own bar";
-  if (across)
     for (const auto* l : below) r.report.bar_grids.push_back(l->cells);
+  }
   for (const auto* l : use) r.report.bar_grids.push_back(l->cells);
   auto add = [&](const std::string& name, auto get) {
     std::vector<double> v, c;
@@ -514,6 +517,21 @@ void set_error_bars(Run& r, const std::vector<plate::ExactLevel>& levels) {
   for (size_t k = 0; k < r.report.points.size(); ++k)
     add("w(" + fmt("%.10g", r.report.points[k].first) + ", " + fmt("%.10g", r.report.points[k].second) + ")",
         [k](const ExactLevel& l) { return l.measures->w_at.at(k); });
+}
+
+// A converged answer too large for a double (R = 1e306 gives a force of about 6e308) would be
+// written as nulls with exit 0; it is bad input instead. (A run that did not converge says so, and
+// exits 3; one whose obstacle may have overflowed K w is refused by overflow_risk, problem.hpp.)
+void refuse_overflow(const plate::Report& r) {
+  std::vector<std::pair<std::string, double>> outputs{{"max w", r.measures.max_w.value},
+                                                      {"min w", r.measures.min_w.value},
+                                                      {"the total contact force", r.total_force},
+                                                      {"max |m12|", r.measures.max_abs_m12.value}};
+  for (size_t k = 0; k < r.measures.w_at.size(); ++k) outputs.emplace_back("w at --point " + std::to_string(k + 1), r.measures.w_at[k]);
+  for (const auto& [name, v] : outputs)
+    if (!std::isfinite(v))
+      throw std::invalid_argument("--obstacle-height, --obstacle or --load: " + name + " = " + plate::fmt("%g", v) +
+                                  ": the answer overflows double precision; state the problem in other units");
 }
 
 // The exact solver's answer in the penalty schemes' form, for one report: on the part of the plate
@@ -674,14 +692,7 @@ Outputs solve_grid(const Options& o, Run& r, plate::SceneSolution& scene, plate:
   r.report.nodes = &nodes;
   r.report.seconds_total = seconds_since(t0);
   r.report.converged = result.converged, r.report.message = result.message;
-  // A converged answer too large for a double (R = 1e306 gives a force of about 6e308) would be
-  // written as nulls with exit 0. (A run that did not converge says so, and exits 3.)
-  if (result.converged)
-    for (const auto& [name, v] : {std::pair<const char*, double>{"max w", r.report.measures.max_w.value}, {"min w", r.report.measures.min_w.value},
-                                {"the total contact force", r.report.total_force}, {"max |m12|", r.report.measures.max_abs_m12.value}})
-      if (!std::isfinite(v))
-        throw std::invalid_argument(std::string("--obstacle-height, --obstacle or --load: ") + name + " = " + fmt("%g", v) +
-                                    ": the answer overflows double precision; state the problem in other units");
+  if (result.converged) refuse_overflow(r.report);
   return {o.csv_path.empty() ? "" : bounds_header(r.report) + nodal_csv(nodes), o.json_path.empty() ? "" : summary_json(r.report),
           o.line_csv_path.empty() ? "" : line_force_csv(problem, r.report.line, r.report.line_figures),
           o.quiet ? "" : summary_text(r.report)};

@@ -141,14 +141,13 @@ Json error_bars_json(const Report& r) {
                {"order", number(b.order)}, {"limit", number(b.limit)}};
   return j;
 }
-}  // namespace
 
-namespace {
 // The largest error bar on a value of w (max w, min w, w at a point), or -1 if there is none. The
 // plate's own answer keeps above the obstacle, so a dip below it between rows is a distance of w_h
-// from that answer: a dip beyond every such bar says the rows resolve the constraint more coarsely
-// than the bars say the values are resolved (--edge-rows spline:3,50 at n = 64 dips 5e-4 with a bar
-// of 4e-8 on max w, which is 1e-4 off).
+// from that answer: a dip beyond every such bar puts w_h farther from the answer somewhere than any
+// bar puts a value of w, which suggests that the rows resolve the constraint more coarsely than the
+// bars suggest (--edge-rows spline:3,50 at n = 64 dips 5e-4 with a bar of 4e-8 on max w, which is
+// 1e-4 off).
 double largest_w_bar(const Report& r) {
   double largest = -1;
   for (const auto& [name, b] : r.bars)
@@ -175,7 +174,8 @@ std::string error_bars_text(const Report& r) {
     if (b.basis == "richardson") o << "Richardson, order " << fmt("%.2f", b.order) << ", steady";
     else if (b.basis == "last difference")
       o << "NOT STEADY: the last difference" << (std::isfinite(b.order) ? ", order " + fmt("%.2f", b.order) : std::string(", one grid before"));
-    else if (b.basis == "the same on every grid") o << "the same value on every grid: nothing changes with h";
+    else if (b.basis == "the same on every grid")
+      o << "the same value on every grid: 0 holds only if the scene fixes it, which no grid can tell from a feature they all miss";
     else if (b.basis == "last difference across the spaces") o << "NOT STEADY: the step from the grid before, plus that grid's own bar";
     else if (b.basis != "none") o << "NOT STEADY: the values swing, or close faster than any order here; the larger of the last two differences";
     else o << "none";
@@ -286,9 +286,8 @@ std::string summary_text(const Report& r) {
   }
   o << error_bars_text(r);
   if (dip_beyond_bars(r))
-    o << "WARNING: between the rows the plate dips " << summary_value(r.dip_below_edge) << " below the obstacle, more than any error bar on w ("
-      << fmt("%.2g", largest_w_bar(r)) << "): w_h is at least that far from the plate's answer there, so the rows resolve the constraint more coarsely "
-         "than the bars suggest (the default --edge-rows, or a larger n)\n";
+    o << "WARNING: the dip below the edge exceeds every error bar on w (" << fmt("%.2g", largest_w_bar(r))
+      << "): the rows may resolve the constraint more coarsely than the bars suggest (the default --edge-rows, or a larger n)\n";
   if (r.certificate) {
     const Certificate& c = *r.certificate;
     o << "certificate (discrete: the distance to the discrete answer; relative): violation " << summary_value(c.violation) << ", negative multiplier "
