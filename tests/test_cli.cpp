@@ -279,6 +279,26 @@ TEST(Cli, ADipBelowTheObstacleBeyondTheBarsIsAWarning) {
   EXPECT_EQ(fine_rows.output.find("WARNING"), std::string::npos) << fine_rows.output;
 }
 
+// A cylinder written as an expression, with no --edge, is sampled at nodes alone where it ends:
+// the run must say so, and name --edge; given its edge, it says nothing.
+TEST(Cli, AnObstacleThatEndsWhereNoEdgeIsGivenIsAWarning) {
+  const std::string json = temp_path("jumps.json"), disk = " --obstacle '(x-0.5)^2+(y-0.5)^2 < 0.04 ? 0.05 : -inf'";
+  std::filesystem::remove(json);
+  const PlateRun bare = run_plate("-n 32" + disk + " --json " + json);
+  ASSERT_EQ(bare.status, 0) << bare.output;
+  const auto j = read_json(json);
+  EXPECT_GT(j.value("obstacle_jumps_without_edge", 0), 0) << j.dump();
+  ASSERT_TRUE(j["first_jump_at"].is_array()) << j.dump();
+  EXPECT_NEAR(std::hypot(j["first_jump_at"][0].get<double>() - 0.5, j["first_jump_at"][1].get<double>() - 0.5), 0.2, 1e-9);
+  EXPECT_NE(bare.output.find("WARNING: the obstacle ends"), std::string::npos) << bare.output;
+  EXPECT_NE(bare.output.find("--edge"), std::string::npos) << bare.output;
+  std::filesystem::remove(json);
+  const PlateRun edged = run_plate("-n 32" + disk + " --edge circle:0.5,0.5,0.2 --json " + json);
+  ASSERT_EQ(edged.status, 0) << edged.output;
+  EXPECT_EQ(read_json(json).value("obstacle_jumps_without_edge", -1), 0);
+  EXPECT_EQ(edged.output.find("WARNING"), std::string::npos) << edged.output;
+}
+
 // Outputs are written whole (a temporary file renamed over the path), so a path that is not a
 // regular file or a new one is refused by name before any solve: a symbolic link (the rename would
 // replace it), a device, a FIFO. An existing file keeps its permissions when it is replaced.

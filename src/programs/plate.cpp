@@ -679,6 +679,12 @@ Outputs solve_grid(const Options& o, Run& r, plate::SceneSolution& scene, plate:
   nodes = nodal_fields(problem, result.w, xi, r.report.nu);
   r.report.nodal = nodal_extremes(nodes);
   r.report.dip_below_edge = dip_below_edge(problem, result.w);
+  // The obstacle's jumps where no edge rows sit, kept where the plate passes within a tenth of its
+  // own size above the higher side: a jump far below the plate constrains nothing.
+  const PlateField field(problem, result.w);
+  const double size = std::max(std::abs(r.report.measures.max_w.value), std::abs(r.report.measures.min_w.value));
+  for (const ObstacleJump& j : obstacle_jumps(r.g, r.scene.obstacle, r.scene.edge))
+    if (std::isfinite(j.upper) && field.at(j.x, j.y).w - j.upper <= 0.1 * size) r.report.jumps.push_back(j);
   r.report.xi = xi;
   r.report.line = line_force(problem, xi);
   r.report.line_figures = line_figures(problem, r.report.line);

@@ -229,6 +229,8 @@ std::string summary_json(const Report& r) {
   j["refinement"] = numbers(r.refinement);
   j["refinement_undone"] = r.refinement_undone > 0 ? number(r.refinement_undone) : nullptr;
   j["dip_beyond_w_bars"] = dip_beyond_bars(r);
+  j["obstacle_jumps_without_edge"] = r.jumps.size();
+  j["first_jump_at"] = r.jumps.empty() ? Json(nullptr) : Json{number(r.jumps.front().x), number(r.jumps.front().y)};
   j["contact_nodes"] = Json::array();
   for (int k : e.contact) j["contact_nodes"].push_back({number(f.x[k]), number(f.y[k])});
   if (r.lambda1h > 0)
@@ -285,6 +287,15 @@ std::string summary_text(const Report& r) {
     }
   }
   o << error_bars_text(r);
+  if (!r.jumps.empty()) {
+    const ObstacleJump& j = r.jumps.front();
+    o << "WARNING: the obstacle " << (std::isfinite(j.size) ? "jumps by " + summary_value(j.size) : std::string("ends (phi = -inf beyond)")) << " at ("
+      << summary_value(j.x) << ", " << summary_value(j.y) << ")";
+    if (r.jumps.size() > 1) o << " and at " << r.jumps.size() - 1 << " more points of the grid's lines";
+    o << ", where no --edge is given and the plate comes near: the constraint there is held at nodes alone, whose contact line "
+         "moves by up to a cell from grid to grid, so the answer converges like h and the error bars may not hold (give the "
+         "curve with --edge)\n";
+  }
   if (dip_beyond_bars(r))
     o << "WARNING: the dip below the edge exceeds every error bar on w (" << fmt("%.2g", largest_w_bar(r))
       << "): the rows may resolve the constraint more coarsely than the bars suggest (the default --edge-rows, or a larger n)\n";

@@ -9,6 +9,7 @@
 #include "error_bar.hpp"
 #include "extrema.hpp"
 #include "line_force.hpp"
+#include "obstacle_jumps.hpp"
 #include "schemes.hpp"
 
 namespace plate {
@@ -43,6 +44,8 @@ struct Report {
   std::vector<double> refinement;     // the exact solve's refinement steps, each correction's relative size
   double refinement_undone = 0;       // its first correction, when the next did not confirm it (then undone)
   double dip_below_edge = NAN;        // max of phi - w along the edge curve (NaN: no edge)
+  // Jumps of the obstacle with no edge rows there (obstacle_jumps.hpp) that the plate comes near.
+  std::vector<ObstacleJump> jumps;
   // The extremes of the finite-element fields over the plate and w_h at `points` (extrema.hpp), or
   // the series' peak and w at `points`, measured by the program before it reports; the nodal ones
   // are read off `nodes`.
