@@ -280,7 +280,8 @@ TEST(Cli, ADipBelowTheObstacleBeyondTheBarsIsAWarning) {
 }
 
 // A cylinder written as an expression, with no --edge, is sampled at nodes alone where it ends:
-// the run must say so, and name --edge; given its edge, it says nothing.
+// the run must say so, and name --edge; given its edge, it says nothing. The paper's cylinder with
+// --sampling nodes has its edge, but no rows on it: that is a warning too.
 TEST(Cli, AnObstacleThatEndsWhereNoEdgeIsGivenIsAWarning) {
   const std::string json = temp_path("jumps.json"), disk = " --obstacle '(x-0.5)^2+(y-0.5)^2 < 0.04 ? 0.05 : -inf'";
   std::filesystem::remove(json);
@@ -297,6 +298,10 @@ TEST(Cli, AnObstacleThatEndsWhereNoEdgeIsGivenIsAWarning) {
   ASSERT_EQ(edged.status, 0) << edged.output;
   EXPECT_EQ(read_json(json).value("obstacle_jumps_without_edge", -1), 0);
   EXPECT_EQ(edged.output.find("WARNING"), std::string::npos) << edged.output;
+  std::filesystem::remove(json);
+  const PlateRun nodes = run_plate("-n 32 --sampling nodes --json " + json);
+  ASSERT_EQ(nodes.status, 0) << nodes.output;
+  EXPECT_GT(read_json(json).value("obstacle_jumps_without_edge", 0), 0) << nodes.output;
 }
 
 // Outputs are written whole (a temporary file renamed over the path), so a path that is not a

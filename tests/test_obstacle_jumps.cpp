@@ -36,7 +36,7 @@ TEST(ObstacleJumps, TheEndOfASupportIsFoundOnItsCurveAndNotWhereAnEdgeCarriesIt)
 TEST(ObstacleJumps, AFiniteJumpIsFoundAndAContinuousObstacleHasNone) {
   const Grid g = unit_grid(16);
   const std::vector<ObstacleJump> step = obstacle_jumps(g, [](double x, double) { return x < 0.53 ? -0.01 : -0.03; }, {});
-  ASSERT_EQ(step.size(), 17u);  // one on each line of nodes along x
+  ASSERT_EQ(step.size(), 15u);  // one on each interior line of nodes along x
   for (const ObstacleJump& j : step) {
     EXPECT_NEAR(j.x, 0.53, 1e-9);
     EXPECT_NEAR(j.size, 0.02, 1e-15);
@@ -44,8 +44,23 @@ TEST(ObstacleJumps, AFiniteJumpIsFoundAndAContinuousObstacleHasNone) {
   }
   const Field smooth = [](double x, double y) { return 0.05 - 2 * ((x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5)); };
   const Field kink = [](double x, double y) { return -0.01 - std::abs(x - 0.47) - 3 * std::abs(y - 0.52); };
-  const Field steep = [](double x, double) { return -1 + 0.5 * std::tanh(200 * (x - 0.5)); };  // continuous, steep over a cell
+  // Continuous and steep inside one side of a cell, which is then looked at and cleared by bisection.
+  const Field steep = [](double x, double) { return -1 + 0.5 * std::tanh(200 * (x - 0.53)); };
   EXPECT_TRUE(obstacle_jumps(g, smooth, {}).empty());
   EXPECT_TRUE(obstacle_jumps(g, kink, {}).empty());
   EXPECT_TRUE(obstacle_jumps(g, steep, {}).empty());
+}
+
+// Jumps in two neighbouring sides (a ridge narrower than a cell), and a jump at a node whose value
+// lies between the two sides', are each found.
+TEST(ObstacleJumps, ARidgeNarrowerThanACellAndAJumpAtANodeAreFound) {
+  const Grid g = unit_grid(16);
+  const Field ridge = [](double x, double y) { return (std::abs(x - 0.5) < 0.05 ? 0.06 * std::sin(M_PI * y) : 0.0) - 0.01; };
+  const std::vector<ObstacleJump> r = obstacle_jumps(g, ridge, {});
+  ASSERT_EQ(r.size(), 2u * 15);  // both sides of the ridge on each interior line along x
+  for (const ObstacleJump& j : r) EXPECT_NEAR(std::abs(j.x - 0.5), 0.05, 1e-9);
+  const Field step = [](double x, double) { return -0.02 + 0.01 * ((x > 0.5) - (x < 0.5)); };  // -0.02 at x = 0.5 itself
+  const std::vector<ObstacleJump> s = obstacle_jumps(g, step, {});
+  ASSERT_EQ(s.size(), 2u * 15);  // from the side on each hand of the node, on each interior line
+  for (const ObstacleJump& j : s) EXPECT_NEAR(j.x, 0.5, 1e-9);
 }

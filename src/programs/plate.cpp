@@ -679,12 +679,23 @@ Outputs solve_grid(const Options& o, Run& r, plate::SceneSolution& scene, plate:
   nodes = nodal_fields(problem, result.w, xi, r.report.nu);
   r.report.nodal = nodal_extremes(nodes);
   r.report.dip_below_edge = dip_below_edge(problem, result.w);
-  // The obstacle's jumps where no edge rows sit, kept where the plate passes within a tenth of its
-  // own size above the higher side: a jump far below the plate constrains nothing.
+  // The obstacle's jumps where no edge rows sit (edge sampling puts them on the edge curve; nodes
+  // and Gauss points have none), kept where the plate touches the jump's higher side at a node
+  // within two cells: a jump the plate keeps clear of constrains nothing.
   const PlateField field(problem, result.w);
-  const double size = std::max(std::abs(r.report.measures.max_w.value), std::abs(r.report.measures.min_w.value));
-  for (const ObstacleJump& j : obstacle_jumps(r.g, r.scene.obstacle, r.scene.edge))
-    if (std::isfinite(j.upper) && field.at(j.x, j.y).w - j.upper <= 0.1 * size) r.report.jumps.push_back(j);
+  const double touch = 1e-6 * std::max(std::abs(r.report.measures.max_w.value), std::abs(r.report.measures.min_w.value));
+  auto touches_near = [&](const ObstacleJump& j) {
+    const int i0 = static_cast<int>(std::floor(j.x / r.g.h)), j0 = static_cast<int>(std::floor(j.y / r.g.h));
+    for (int i = std::max(i0 - 1, 1); i <= std::min(i0 + 2, r.g.nx - 1); ++i)
+      for (int k = std::max(j0 - 1, 1); k <= std::min(j0 + 2, r.g.ny - 1); ++k) {
+        const double p = r.scene.obstacle(r.g.x(i), r.g.y(k));
+        const bool higher = std::isfinite(p) && (j.ends || std::abs(p - j.upper) < 0.5 * j.size);
+        if (higher && field.at(r.g.x(i), r.g.y(k)).w - p <= touch) return true;
+      }
+    return false;
+  };
+  for (const ObstacleJump& j : obstacle_jumps(r.g, r.scene.obstacle, has_edge(r.spec.kind) ? r.scene.edge : EdgeCurve{}))
+    if (touches_near(j)) r.report.jumps.push_back(j);
   r.report.xi = xi;
   r.report.line = line_force(problem, xi);
   r.report.line_figures = line_figures(problem, r.report.line);

@@ -289,12 +289,12 @@ std::string summary_text(const Report& r) {
   o << error_bars_text(r);
   if (!r.jumps.empty()) {
     const ObstacleJump& j = r.jumps.front();
-    o << "WARNING: the obstacle " << (std::isfinite(j.size) ? "jumps by " + summary_value(j.size) : std::string("ends (phi = -inf beyond)")) << " at ("
+    o << "WARNING: the obstacle " << (j.ends ? std::string("ends (phi = -inf beyond)") : "jumps by " + summary_value(j.size)) << " at ("
       << summary_value(j.x) << ", " << summary_value(j.y) << ")";
     if (r.jumps.size() > 1) o << " and at " << r.jumps.size() - 1 << " more points of the grid's lines";
-    o << ", where no --edge is given and the plate comes near: the constraint there is held at nodes alone, whose contact line "
-         "moves by up to a cell from grid to grid, so the answer converges like h and the error bars may not hold (give the "
-         "curve with --edge)\n";
+    o << ", where no edge rows sit and the plate touches nearby: the constraint there is held at nodes alone, whose contact "
+         "line moves by up to a cell from grid to grid, so the answer converges like h and the error bars may not hold (give "
+         "the curve with --edge, and --sampling edge)\n";
   }
   if (dip_beyond_bars(r))
     o << "WARNING: the dip below the edge exceeds every error bar on w (" << fmt("%.2g", largest_w_bar(r))
