@@ -1,0 +1,172 @@
+// The fields of a contact's end, the fit that locates it, and their blocks of the stiffness.
+#include "contact_end.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "bfs_element.hpp"
+#include "gauss.hpp"
+
+namespace plate {
+
+namespace {
+
+// Derivatives of a function of (r, theta), the circle's polar coordinates, in x and y.
+EndDerivatives cartesian(double r, double theta, double v, double R1, double T1, double RR, double RT, double TT) {
+  const double c = std::cos(theta), s = std::sin(theta);
+  EndDerivatives o;
+  o.w = v;
+  o.wx = c * R1 - s / r * T1;
+  o.wy = s * R1 + c / r * T1;
+  o.wxx = c * c * RR - 2 * c * s / r * RT + s * s / (r * r) * TT + s * s / r * R1 + 2 * c * s / (r * r) * T1;
+  o.wyy = s * s * RR + 2 * c * s / r * RT + c * c / (r * r) * TT + c * c / r * R1 - 2 * c * s / (r * r) * T1;
+  o.wxy = c * s * RR + (c * c - s * s) / r * RT - c * s / (r * r) * TT - c * s / r * R1 - (c * c - s * s) / (r * r) * T1;
+  return o;
+}
+
+// The rim-fitted coordinates of (x, y): t along the rim into the free side, nu = r - a.
+struct Fitted {
+  double r, theta, t, nu, rho;
+};
+Fitted fitted(const ContactEnd& e, double x, double y) {
+  Fitted f;
+  const double dx = x - e.cx, dy = y - e.cy;
+  f.r = std::hypot(dx, dy), f.theta = std::atan2(dy, dx);
+  f.t = e.a * std::remainder(f.theta - e.theta, 2 * M_PI) * e.sigma;
+  f.nu = f.r - e.a;
+  f.rho = std::hypot(f.t, f.nu);
+  return f;
+}
+
+// A function of (t, nu), given its derivatives there, in x and y: d/dr = d/dnu, d/dtheta = sigma a d/dt.
+EndDerivatives from_fitted(const ContactEnd& e, const Fitted& p, double v, double Ft, double Fn, double Ftt, double Ftn, double Fnn) {
+  const double sa = e.sigma * e.a;
+  return cartesian(p.r, p.theta, v, Fn, sa * Ft, Fnn, sa * Ftn, e.a * e.a * Ftt);
+}
+
+}  // namespace
+
+EndDerivatives end_field(const ContactEnd& e, EndField which, double x, double y) {
+  const Fitted p = fitted(e, x, y);
+  if (p.rho == 0) return {};
+  // rho^lambda G(omega), G = cos(lambda omega) + B cos(omega / 2): B = 3 for lambda = 3/2 and -5 for
+  // 5/2 make the normal slope vanish on the contact side (G'(pi) = 0), so the field is C^2 across it.
+  const double lam = which == EndField::Gap32 ? 1.5 : 2.5, B = which == EndField::Gap32 ? 3.0 : -5.0;
+  const double om = std::atan2(p.nu, p.t), c = std::cos(om), s = std::sin(om), rho = p.rho;
+  const double G = std::cos(lam * om) + B * std::cos(om / 2);
+  const double G1 = -lam * std::sin(lam * om) - 0.5 * B * std::sin(om / 2);
+  const double G2 = -lam * lam * std::cos(lam * om) - 0.25 * B * std::cos(om / 2);
+  const double rl = std::pow(rho, lam);
+  const double Fr = lam * rl / rho * G, Fw = rl * G1, Frr = lam * (lam - 1) * rl / (rho * rho) * G, Frw = lam * rl / rho * G1, Fww = rl * G2;
+  const double Ft = c * Fr - s / rho * Fw, Fn = s * Fr + c / rho * Fw;
+  const double Ftt = c * c * Frr - 2 * c * s / rho * Frw + s * s / (rho * rho) * Fww + s * s / rho * Fr + 2 * c * s / (rho * rho) * Fw;
+  const double Fnn = s * s * Frr + 2 * c * s / rho * Frw + c * c / (rho * rho) * Fww + c * c / rho * Fr - 2 * c * s / (rho * rho) * Fw;
+  const double Ftn = c * s * Frr + (c * c - s * s) / rho * Frw - c * s / (rho * rho) * Fww - c * s / rho * Fr - (c * c - s * s) / (rho * rho) * Fw;
+  return from_fitted(e, p, rl * G, Ft, Fn, Ftt, Ftn, Fnn);
+}
+
+EndDerivatives end_cutoff(const ContactEnd& e, double x, double y) {
+  const Fitted p = fitted(e, x, y);
+  EndDerivatives o;
+  if (p.rho >= e.outer) return o;
+  o.w = 1;
+  if (p.rho <= e.inner) return o;
+  const double L = e.outer - e.inner, u = (p.rho - e.inner) / L, u2 = u * u, v = 1 - u;
+  const double X = 1 - u2 * u2 * (35 - 84 * u + 70 * u2 - 20 * u2 * u);
+  const double X1 = -140 * u2 * u * v * v * v / L, X2 = -420 * u2 * v * v * (1 - 2 * u) / (L * L);
+  const double c = p.t / p.rho, s = p.nu / p.rho;
+  return from_fitted(e, p, X, X1 * c, X1 * s, X2 * c * c + X1 * s * s / p.rho, (X2 - X1 / p.rho) * c * s,
+                     X2 * s * s + X1 * c * c / p.rho);
+}
+
+EndValue end_function(const ContactEnd& e, EndField which, const Grid& g, double x, double y) {
+  const EndDerivatives X = end_cutoff(e, x, y);
+  if (X.w == 0) return {};
+  const EndDerivatives F = end_field(e, which, x, y);
+  int ex, ey;
+  double t, u;
+  if (!g.locate(x, y, ex, ey, t, u)) throw std::invalid_argument("end_function: the point is outside the grid");
+  const LocalBasis b = bfs_basis(t, u, g.h);
+  EndDerivatives I;  // I_h F from the four corners' values, slopes and twist
+  for (int ay = 0; ay < 2; ++ay)
+    for (int ax = 0; ax < 2; ++ax) {
+      const EndDerivatives n = end_field(e, which, (ex + ax) * g.h, (ey + ay) * g.h);
+      const double dof[4] = {n.w, n.wx, n.wy, n.wxy};
+      for (int c = 0; c < 4; ++c) {
+        const int j = 4 * (ax + 2 * ay) + c;
+        I.w += dof[c] * b.v[j], I.wx += dof[c] * b.dx[j], I.wy += dof[c] * b.dy[j];
+        I.wxx += dof[c] * b.dxx[j], I.wyy += dof[c] * b.dyy[j];
+      }
+    }
+  const double d = F.w - I.w, dx = F.wx - I.wx, dy = F.wy - I.wy, lap = F.wxx + F.wyy - I.wxx - I.wyy;
+  return {X.w * d, X.w * lap + 2 * (X.wx * dx + X.wy * dy) + d * (X.wxx + X.wyy)};
+}
+
+double end_shift(const std::vector<double>& s, const std::vector<double>& gap) {
+  if (s.size() != gap.size() || s.size() < 3) throw std::invalid_argument("end_shift: three or more samples, one gap each");
+  Eigen::MatrixXd A(s.size(), 3);
+  Eigen::VectorXd b(s.size());
+  for (size_t i = 0; i < s.size(); ++i) {
+    A(i, 0) = std::pow(s[i], 1.5), A(i, 1) = std::pow(s[i], 2.5), A(i, 2) = std::pow(s[i], 3.5);
+    b[i] = gap[i];
+  }
+  const Eigen::VectorXd c = A.colPivHouseholderQr().solve(b);
+  if (!(c[1] > 0)) throw std::invalid_argument("end_shift: the gap does not open like an end's (its s^(5/2) term is not positive)");
+  return -0.4 * c[0] / c[1];
+}
+
+EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends, const std::vector<EndField>& fields) {
+  if (ends.size() != fields.size()) throw std::invalid_argument("assemble_end_blocks: one field per end");
+  const int k = static_cast<int>(ends.size()), N = g.unknowns();
+  EndBlocks out{Eigen::MatrixXd::Zero(N, k), Eigen::MatrixXd::Zero(k, k)};
+  const Quadrature1D q = gauss_legendre(6);
+  // Halvings towards an end (the integrand of its own block grows like 1/rho there, and 45 halvings
+  // leave a square whose share is below round-off) and across the rim (a kink, 9 halvings).
+  const int to_end = 45, to_rim = 9;
+  for (int ey = 0; ey < g.ny; ++ey)
+    for (int ex = 0; ex < g.nx; ++ex) {
+      const double x0 = ex * g.h, y0 = ey * g.h;
+      auto distance = [](double px, double py, double sx, double sy, double size) {
+        return std::hypot(std::max({sx - px, 0.0, px - sx - size}), std::max({sy - py, 0.0, py - sy - size}));
+      };
+      bool near = false;
+      for (const ContactEnd& e : ends)
+        near = near || distance(e.cx + e.a * std::cos(e.theta), e.cy + e.a * std::sin(e.theta), x0, y0, g.h) < e.outer * 1.2 + g.h;
+      if (!near) continue;
+      const auto dofs = g.element_dofs(ex, ey);
+      auto square = [&](auto&& self, double sx, double sy, double size, int depth) -> void {
+        bool split = false;
+        for (const ContactEnd& e : ends) {
+          const double px = e.cx + e.a * std::cos(e.theta), py = e.cy + e.a * std::sin(e.theta);
+          split = split || (depth < to_end && distance(px, py, sx, sy, size) < size) ||
+                  (depth < to_rim && std::abs(std::hypot(sx + size / 2 - e.cx, sy + size / 2 - e.cy) - e.a) < 0.75 * size);
+        }
+        if (split) {
+          const double h2 = size / 2;
+          self(self, sx, sy, h2, depth + 1), self(self, sx + h2, sy, h2, depth + 1);
+          self(self, sx, sy + h2, h2, depth + 1), self(self, sx + h2, sy + h2, h2, depth + 1);
+          return;
+        }
+        for (size_t i = 0; i < q.points.size(); ++i)
+          for (size_t j = 0; j < q.points.size(); ++j) {
+            const double x = sx + size * q.points[i], y = sy + size * q.points[j];
+            const double wq = size * size * q.weights[i] * q.weights[j];
+            std::vector<double> lap(k);
+            bool any = false;
+            for (int f = 0; f < k; ++f) any = (lap[f] = end_function(ends[f], fields[f], g, x, y).lap) != 0 || any;
+            if (!any) continue;
+            const LocalBasis b = bfs_basis((x - x0) / g.h, (y - y0) / g.h, g.h);
+            for (int i = 0; i < 16; ++i)
+              if (dofs[i] >= 0)
+                for (int f = 0; f < k; ++f) out.border(dofs[i], f) += wq * (b.dxx[i] + b.dyy[i]) * lap[f];
+            for (int f = 0; f < k; ++f)
+              for (int l = 0; l < k; ++l) out.own(f, l) += wq * lap[f] * lap[l];
+          }
+      };
+      square(square, x0, y0, g.h, 0);
+    }
+  return out;
+}
+
+}  // namespace plate

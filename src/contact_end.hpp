@@ -1,0 +1,76 @@
+// The plate at the end of a contact on a circle: where a plate lifts off part of a cylinder's rim
+// (the lift-off scenes), its line load grows like s^(-1/2) towards each end of the contact and the
+// gap beyond it closes like s^(5/2) (the lift-off section of the document). Bicubics on a fixed grid
+// cannot follow that field, and where the end falls in its cell changes from grid to grid, so the
+// answer swings. These are the local fields of an end and the fit that locates it from a solve: the
+// pieces of an enrichment that is not yet part of `plate` (issue 39; src/programs/contact_end_study
+// measures it).
+//
+// In coordinates fitted to the rim about an end E at angle theta_e, t = a (theta - theta_e) sigma
+// along the rim into the free side and nu = r - a across it, with polar (rho, omega) in the
+// (t, nu) plane (omega = 0 on the free side of the rim, +-pi on the contact side), the fields
+//   F_32 = rho^(3/2) [cos(3 omega / 2) + 3 cos(omega / 2)],
+//   F_52 = rho^(5/2) [cos(5 omega / 2) - 5 cos(omega / 2)]
+// vanish on the contact side with their normal slope, keep the second normal derivative continuous
+// across it and jump in the third (a line load; for F_52 it is -30 rho^(-1/2)): the two even
+// solutions of the plate's equation, on a straight rim, that a load on a half-line allows. F_52 is
+// the field of the end (gap -4 s^(5/2) on the free side); F_32, whose load s^(-3/2) is not
+// integrable, is the field of an end put in the wrong place.
+#pragma once
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "grid.hpp"
+
+namespace plate {
+
+struct ContactEnd {
+  double cx = 0, cy = 0, a = 0;  // the circle
+  double theta = 0;              // the end
+  double sigma = 1;              // +1: the plate is free for theta > theta_e; -1: for theta < theta_e
+  double inner = 0, outer = 0;   // the cut-off: 1 for rho <= inner, 0 for rho >= outer
+};
+
+enum class EndField { Gap32, Gap52 };
+
+// A field and its derivatives in x, y.
+struct EndDerivatives {
+  double w = 0, wx = 0, wy = 0, wxx = 0, wxy = 0, wyy = 0;
+};
+
+// F_32 or F_52 at (x, y), without the cut-off.
+EndDerivatives end_field(const ContactEnd& e, EndField f, double x, double y);
+// The cut-off chi(rho): 1 up to `inner`, the septic smoothstep (C^3) down to 0 at `outer`.
+EndDerivatives end_cutoff(const ContactEnd& e, double x, double y);
+
+// The function an enrichment adds, chi (F - I_h F) with I_h the grid's Hermite interpolant: F less
+// what the bicubics already carry, so that only its part at the end is new. Without the subtraction
+// the cut-off's steep but smooth part dominates what the bicubics miss of chi F (on the 2 x 1 scene
+// at h = 1/128, the Schur complement of chi F_52 is 25 times what its singular part alone leaves),
+// and the solve's coefficient of the function says nothing about the end (1e-3 where the gap law
+// says 0.13). Value and Laplacian at (x, y).
+struct EndValue {
+  double w = 0, lap = 0;
+};
+EndValue end_function(const ContactEnd& e, EndField f, const Grid& g, double x, double y);
+
+// Where the end lies, from the gap g(s) that a solve leaves at arc lengths s > 0 into the free side
+// of an end put at s = 0: least squares of g on s^(3/2), s^(5/2), s^(7/2). The gap of an end at
+// s = delta is A (s - delta)^(5/2) + ..., whose s^(3/2) term is -(5/2) A delta, so delta =
+// -(2/5) B / A with B, A the first two coefficients: an expansion in delta / s, so a caller moves the
+// end by at most a fraction of the samples' reach and fits again. Throws std::invalid_argument for fewer than
+// three samples or a fit with A <= 0 (no gap that opens like an end's).
+double end_shift(const std::vector<double>& s, const std::vector<double>& gap);
+
+// The blocks the functions `fields` at `ends` (one function each) add to the plate's system on grid
+// g: border(i, k) = (Lap phi_i, Lap psi_k) over the grid's unknowns i, own(k, l) = (Lap psi_k,
+// Lap psi_l). Each cell near an end is cut into squares, halved towards the end (its second
+// derivatives are singular there) and towards the rim (they kink across it), with 6 x 6 Gauss
+// points on each.
+struct EndBlocks {
+  Eigen::MatrixXd border, own;
+};
+EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends, const std::vector<EndField>& fields);
+
+}  // namespace plate

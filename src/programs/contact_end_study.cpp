@@ -1,0 +1,197 @@
+// contact_end_study: the lift-off scene with the field of each contact's end carried (contact_end.hpp)
+// and the end located by the fit of the gap beyond it, a step towards issue 39 that `plate` does not
+// take yet. A plate lx x 1 over the paper's cylinder at its centre, solved on the quarter its
+// mirror lines leave (which holds one end, at pi + theta_e): rows averaged against graded clamped
+// splines on the contact arcs [theta_e, pi - theta_e] and its images, points a cell apart off them
+// and `--dense` per cell for four cells beyond each end; the space widened by chi (F - I_h F) of
+// F_32 and F_52 at the end; solved exactly (no refinement: its residual does not know the new
+// functions); the end moved by the fit (at most half a cell a step) until it moves less than 1e-9.
+// Prints, per grid, the end, max w (at the centre), the two coefficients and the moves.
+//   build/contact_end_study --lx 2 --from 128 --to 320 --step 16
+// Not run by make: what it measures is in the closing notes of issue 39.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "active_set.hpp"
+#include "contact.hpp"
+#include "contact_end.hpp"
+#include "dual_active_set.hpp"
+#include "edge.hpp"
+#include "gauss.hpp"
+#include "mirror.hpp"
+#include "rim_rows.hpp"
+
+using namespace plate;
+
+namespace {
+
+constexpr double kRadius = 0.25, kHeight = 0.0625;
+
+struct Answer {
+  bool converged = false;
+  double max_w = 0, theta_e = 0;
+  std::vector<double> coefficients;
+  int pushing = 0;  // point rows beyond the end that carry load
+};
+
+// The rows for contact on [theta_e, pi - theta_e] and its images: graded splines there, points a
+// cell apart elsewhere and `dense` per cell for four cells beyond each end.
+void lay_out(Problem& p, double theta_e, double dense) {
+  const double h = p.grid.h, cell = h / kRadius;
+  RimLayout L;
+  L.periodic = false;
+  for (double base : {0.0, M_PI}) {
+    SplineArc arc;
+    arc.breaks = graded_breaks(base + theta_e, base + M_PI - theta_e, 2 * cell, 4 * cell);
+    L.arcs.push_back(arc);
+  }
+  for (double t : edge_points(p.scene.edge, h).theta) {
+    bool on = false;
+    for (const SplineArc& arc : L.arcs) on = on || arc.contains(t);
+    if (!on) L.points.push_back(t);
+  }
+  for (double end : {theta_e, M_PI - theta_e, M_PI + theta_e, 2 * M_PI - theta_e}) {
+    const double free = (end == theta_e || end == M_PI + theta_e) ? -1 : 1;
+    for (int i = 1; i <= 4 * dense; ++i) L.points.push_back(std::fmod(end + free * i * cell / dense + 4 * M_PI, 2 * M_PI));
+  }
+  std::sort(L.points.begin(), L.points.end());
+  lay_out_rim(p, L);
+}
+
+// The space widened by chi (F - I_h F) of each field at `end`: K bordered by their blocks, S given
+// their values at point rows and nodes and their averages against a spline row's basis (the
+// quadrature of (D28)'s rows, 8 Gauss points on pieces about a cell).
+void widen(Problem& p, const ContactEnd& end, const std::vector<EndField>& fields) {
+  const Grid& g = p.grid;
+  const double h = g.h, a = kRadius, cx = g.lx(), cy = g.ly();
+  const int N = g.unknowns(), k = static_cast<int>(fields.size());
+  const std::vector<ContactEnd> ends(k, end);
+  const EndBlocks blocks = assemble_end_blocks(g, ends, fields);
+  std::vector<Eigen::Triplet<double>> t;
+  for (int c = 0; c < p.K.outerSize(); ++c)
+    for (SpMat::InnerIterator it(p.K, c); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
+  for (int i = 0; i < N; ++i)
+    for (int f = 0; f < k; ++f)
+      if (blocks.border(i, f) != 0) t.emplace_back(i, N + f, blocks.border(i, f)), t.emplace_back(N + f, i, blocks.border(i, f));
+  for (int f = 0; f < k; ++f)
+    for (int l = 0; l < k; ++l) t.emplace_back(N + f, N + l, blocks.own(f, l));
+  SpMat K(N + k, N + k);
+  K.setFromTriplets(t.begin(), t.end());
+  p.K = std::move(K);
+  p.F.conservativeResize(N + k);
+  p.F.tail(k).setZero();
+  const Sampling& s = p.sampling;
+  std::vector<Eigen::Triplet<double>> ts;
+  for (int r = 0; r < s.S.outerSize(); ++r)
+    for (RowSpMat::InnerIterator it(s.S, r); it; ++it) ts.emplace_back(r, it.col(), it.value());
+  const Quadrature1D q = gauss_legendre(8);
+  for (int r = 0; r < s.size(); ++r) {
+    std::vector<double> v(k, 0.0);
+    const int e = r - s.edge_begin;
+    if (e < 0 || s.rim_rows[e].point()) {
+      for (int f = 0; f < k; ++f) v[f] = end_function(end, fields[f], g, s.x[r], s.y[r]).w;
+    } else {
+      const SplineArc& arc = s.rim.arcs[s.rim_rows[e].arc];
+      const int j = s.rim_rows[e].basis, degree = 3;
+      const double delta = clamped_bspline_integral(arc, degree, j);
+      for (int span = j; span <= j + degree; ++span) {
+        const double lo = arc.knot(span, degree), hi = arc.knot(span + 1, degree);
+        const int pieces = std::max(1, static_cast<int>(std::ceil(a * (hi - lo) / h - 1e-9)));
+        for (int piece = 0; hi > lo && piece < pieces; ++piece)
+          for (size_t i = 0; i < q.points.size(); ++i) {
+            const double th = lo + (hi - lo) * (piece + q.points[i]) / pieces;
+            const double weight = clamped_bspline(arc, degree, j, th) * (hi - lo) * q.weights[i] / pieces / delta;
+            for (int f = 0; f < k; ++f) v[f] += weight * end_function(end, fields[f], g, cx + a * std::cos(th), cy + a * std::sin(th)).w;
+          }
+      }
+    }
+    for (int f = 0; f < k; ++f)
+      if (v[f] != 0) ts.emplace_back(r, N + f, v[f]);
+  }
+  RowSpMat S(s.size(), N + k);
+  S.setFromTriplets(ts.begin(), ts.end());
+  p.sampling.S = std::move(S);
+  KinkEnrichment size_only;  // the solver reads the count of extra unknowns from here
+  size_only.functions = k;
+  p.kink = size_only;
+}
+
+// One solve with the end at theta_e; `fields` empty: the plain space. `shift` gets the fit's move of
+// the end (an angle, at most half a cell).
+Answer solve_once(const Scene& scene, int n, double theta_e, const std::vector<EndField>& fields, double dense, double& shift) {
+  SamplingSpec spec{SamplingKind::Edge, EdgeRows{}};
+  const Grid whole = scene.grid(n);
+  Problem p = make_problem(scene, part_of(whole, find_mirrors(scene, whole, spec)), spec);
+  const Grid& g = p.grid;
+  const double h = g.h, a = kRadius, cx = g.lx(), cy = g.ly();
+  const int N = g.unknowns(), k = static_cast<int>(fields.size());
+  const ContactEnd end{cx, cy, a, M_PI + theta_e, -1, 0.05, 0.1};
+  lay_out(p, theta_e, dense);
+  if (k) widen(p, end, fields);
+  ExactOptions o;
+  o.refine = false;
+  const ExactResult r = solve_exact_rows(p, o, NodeSet{}, RowExchange{}, nullptr);
+  p.kink.reset();
+  const VectorXd grid_w = r.w.head(N);
+  const PlateField field(p, grid_w);
+  auto w_at = [&](double x, double y) {
+    double w = field.at(x, y).w;
+    for (int f = 0; f < k; ++f) w += r.w[N + f] * end_function(end, fields[f], g, x, y).w;
+    return w;
+  };
+  Answer out;
+  out.converged = r.converged;
+  out.max_w = w_at(cx, cy);
+  out.theta_e = theta_e;
+  for (int f = 0; f < k; ++f) out.coefficients.push_back(r.w[N + f]);
+  for (int e = 0; e < p.sampling.edge_size(); ++e)
+    if (p.sampling.rim_rows[e].point() && r.lambda[p.sampling.edge_begin + e] > 0) ++out.pushing;
+  // The gap beyond the end from a quarter to six cells, and the fit's move, at most half a cell.
+  std::vector<double> at, gap;
+  for (int i = 0; i < 80; ++i) {
+    const double s = (0.25 + 5.75 * i / 79.0) * h, th = M_PI + theta_e - s / a;
+    at.push_back(s), gap.push_back(w_at(cx + a * std::cos(th), cy + a * std::sin(th)) - kHeight);
+  }
+  shift = std::clamp(end_shift(at, gap), -h / 2, h / 2) / a;
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"The lift-off scene with the contact's ends carried and located (issue 39's next step)."};
+  double lx = 2, start = 0.99, dense = 8;
+  int from = 64, to = 512, step = 0;
+  bool plain = false;
+  app.add_option("--lx", lx, "the plate's length (height 1), the cylinder at its centre")->check(CLI::Range(1.2, 4.0));
+  app.add_option("--start", start, "the first guess of theta_e, in radians")->check(CLI::Range(0.5, 1.5));
+  app.add_option("--from", from, "cells along x on the first grid")->check(CLI::Range(32, 2048));
+  app.add_option("--to", to, "cells along x on the last grid")->check(CLI::Range(32, 2048));
+  app.add_option("--step", step, "cells added from grid to grid (0: doubled)")->check(CLI::Range(0, 512));
+  app.add_option("--dense", dense, "point rows per cell for four cells beyond each end")->check(CLI::Range(1.0, 32.0));
+  app.add_flag("--plain", plain, "the plain space (the end still located by the fit)");
+  CLI11_PARSE(app, argc, argv);
+  const Scene scene = Scene::rectangle(lx, 1).over(Cylinder{lx / 2, 0.5, kRadius, kHeight});
+  const std::vector<EndField> fields = plain ? std::vector<EndField>{} : std::vector<EndField>{EndField::Gap32, EndField::Gap52};
+  std::printf("%6s %12s %16s %12s %12s %6s %8s\n", "n", "theta_e", "max w", "c_32", "c_52", "moves", "pushing");
+  for (int n = from; n <= to; n = step ? n + step : 2 * n) {
+    double theta = start, shift = 0;
+    Answer a;
+    int moves = 0;
+    for (; moves < 30; ++moves) {
+      a = solve_once(scene, n, theta, fields, dense, shift);
+      if (!a.converged) {
+        std::fprintf(stderr, "contact_end_study: the solve on n = %d did not converge\n", n);
+        return 3;
+      }
+      if (std::abs(shift) < 1e-9) break;
+      theta -= shift;  // the quarter's end is at pi + theta_e, free for smaller angles
+    }
+    std::printf("%6d %12.9f %16.12f %12.4e %12.4e %6d %8d\n", n, a.theta_e, a.max_w, a.coefficients.empty() ? 0.0 : a.coefficients[0],
+                a.coefficients.size() < 2 ? 0.0 : a.coefficients[1], moves, a.pushing);
+    std::fflush(stdout);
+  }
+}
