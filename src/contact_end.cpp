@@ -12,19 +12,6 @@ namespace plate {
 
 namespace {
 
-// Derivatives of a function of (r, theta), the circle's polar coordinates, in x and y.
-EndDerivatives cartesian(double r, double theta, double v, double R1, double T1, double RR, double RT, double TT) {
-  const double c = std::cos(theta), s = std::sin(theta);
-  EndDerivatives o;
-  o.w = v;
-  o.wx = c * R1 - s / r * T1;
-  o.wy = s * R1 + c / r * T1;
-  o.wxx = c * c * RR - 2 * c * s / r * RT + s * s / (r * r) * TT + s * s / r * R1 + 2 * c * s / (r * r) * T1;
-  o.wyy = s * s * RR + 2 * c * s / r * RT + c * c / (r * r) * TT + c * c / r * R1 - 2 * c * s / (r * r) * T1;
-  o.wxy = c * s * RR + (c * c - s * s) / r * RT - c * s / (r * r) * TT - c * s / r * R1 - (c * c - s * s) / (r * r) * T1;
-  return o;
-}
-
 // The rim-fitted coordinates of (x, y): t along the rim into the free side, nu = r - a.
 struct Fitted {
   double r, theta, t, nu, rho;
@@ -42,7 +29,7 @@ Fitted fitted(const ContactEnd& e, double x, double y) {
 // A function of (t, nu), given its derivatives there, in x and y: d/dr = d/dnu, d/dtheta = sigma a d/dt.
 EndDerivatives from_fitted(const ContactEnd& e, const Fitted& p, double v, double Ft, double Fn, double Ftt, double Ftn, double Fnn) {
   const double sa = e.sigma * e.a;
-  return cartesian(p.r, p.theta, v, Fn, sa * Ft, Fnn, sa * Ftn, e.a * e.a * Ftt);
+  return from_polar(p.r, std::cos(p.theta), std::sin(p.theta), v, Fn, sa * Ft, Fnn, sa * Ftn, e.a * e.a * Ftt);
 }
 
 }  // namespace

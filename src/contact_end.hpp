@@ -22,6 +22,7 @@
 #include <Eigen/Dense>
 
 #include "grid.hpp"
+#include "polar.hpp"
 
 namespace plate {
 
@@ -35,9 +36,7 @@ struct ContactEnd {
 enum class EndField { Gap32, Gap52 };
 
 // A field and its derivatives in x, y.
-struct EndDerivatives {
-  double w = 0, wx = 0, wy = 0, wxx = 0, wxy = 0, wyy = 0;
-};
+using EndDerivatives = PlaneDerivatives;
 
 // F_32 or F_52 at (x, y), without the cut-off.
 EndDerivatives end_field(const ContactEnd& e, EndField f, double x, double y);

@@ -72,15 +72,7 @@ SplinesAt splines_at(const KinkEnrichment& e, double theta) {
 
 // Cartesian derivatives of F(r, theta) = g(r - a) S(theta) from its polar ones.
 KinkValue cartesian(const Radial& g, const Spline3& S, double r, double c, double s) {
-  const double Fr = g.g1 * S.v, Ft = g.g * S.d1, Frr = g.g2 * S.v, Frt = g.g1 * S.d1, Ftt = g.g * S.d2;
-  KinkValue v;
-  v.w = g.g * S.v;
-  v.wx = c * Fr - s / r * Ft;
-  v.wy = s * Fr + c / r * Ft;
-  v.wxx = c * c * Frr - 2 * c * s / r * Frt + s * s / (r * r) * Ftt + s * s / r * Fr + 2 * c * s / (r * r) * Ft;
-  v.wyy = s * s * Frr + 2 * c * s / r * Frt + c * c / (r * r) * Ftt + c * c / r * Fr - 2 * c * s / (r * r) * Ft;
-  v.wxy = c * s * Frr + (c * c - s * s) / r * Frt - c * s / (r * r) * Ftt - c * s / r * Fr - (c * c - s * s) / (r * r) * Ft;
-  return v;
+  return from_polar(r, c, s, g.g * S.v, g.g1 * S.v, g.g * S.d1, g.g2 * S.v, g.g1 * S.d1, g.g * S.d2);
 }
 
 void add(KinkValue& to, const KinkValue& v, double c) {

@@ -22,6 +22,7 @@
 #include "assemble.hpp"
 #include "edge.hpp"
 #include "grid.hpp"
+#include "polar.hpp"
 #include "sparse.hpp"
 
 namespace plate {
@@ -71,9 +72,7 @@ std::string kink_misfit(const Grid& g, const EdgeCurve& circle);
 KinkEnrichment make_kink_enrichment(const Grid& g, const EdgeCurve& circle, int knots);
 
 // F_k of (D31) at (x, y): value and derivatives (before the interpolant is subtracted).
-struct KinkValue {
-  double w = 0, wx = 0, wy = 0, wxx = 0, wxy = 0, wyy = 0;
-};
+using KinkValue = PlaneDerivatives;
 KinkValue kink_profile(const KinkEnrichment& e, int k, double x, double y);
 
 // The Hermite interpolant of each F_k: P(i, k) = unknown i of F_k at its node (N x functions).
