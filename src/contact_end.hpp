@@ -12,8 +12,9 @@
 //   F_32 = rho^(3/2) [cos(3 omega / 2) + 3 cos(omega / 2)],
 //   F_52 = rho^(5/2) [cos(5 omega / 2) - 5 cos(omega / 2)]
 // vanish on the contact side with their normal slope, keep the second normal derivative continuous
-// across it and jump in the third (a line load; for F_52 it is -30 rho^(-1/2)): the two even
-// solutions of the plate's equation, on a straight rim, that a load on a half-line allows. F_52 is
+// across it and jump in the third (a line load; for F_52 it is -30 rho^(-1/2)): of the even
+// solutions of the plate's equation on a straight rim that a load on a half-line allows, the two of
+// finite energy with the lowest exponents. F_52 is
 // the field of the end (gap -4 s^(5/2) on the free side); F_32, whose load s^(-3/2) is not
 // integrable, is the field of an end put in the wrong place.
 #pragma once
@@ -45,10 +46,9 @@ EndDerivatives end_cutoff(const ContactEnd& e, double x, double y);
 
 // The function an enrichment adds, chi (F - I_h F) with I_h the grid's Hermite interpolant: F less
 // what the bicubics already carry, so that only its part at the end is new. Without the subtraction
-// the cut-off's steep but smooth part dominates what the bicubics miss of chi F (on the 2 x 1 scene
-// at h = 1/128, the Schur complement of chi F_52 is 25 times what its singular part alone leaves),
-// and the solve's coefficient of the function says nothing about the end (1e-3 where the gap law
-// says 0.13). Value and Laplacian at (x, y).
+// the cut-off's steep but smooth part dominates what the bicubics miss of chi F, and the solve's
+// coefficient of the function is set by the cut-off's band rather than by the end (the closing note
+// of stop 61 gives the figures). Value and Laplacian at (x, y).
 struct EndValue {
   double w = 0, lap = 0;
 };

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "active_set.hpp"
 #include "contact.hpp"
@@ -82,7 +83,7 @@ void widen(Problem& p, const ContactEnd& end, const std::vector<EndField>& field
   K.setFromTriplets(t.begin(), t.end());
   p.K = std::move(K);
   p.F.conservativeResize(N + k);
-  p.F.tail(k).setZero();
+  p.F.tail(k).setZero();  // the scene carries no load, so (f, psi_k) = 0
   const Sampling& s = p.sampling;
   std::vector<Eigen::Triplet<double>> ts;
   for (int r = 0; r < s.S.outerSize(); ++r)
@@ -114,13 +115,18 @@ void widen(Problem& p, const ContactEnd& end, const std::vector<EndField>& field
   RowSpMat S(s.size(), N + k);
   S.setFromTriplets(ts.begin(), ts.end());
   p.sampling.S = std::move(S);
-  KinkEnrichment size_only;  // the solver reads the count of extra unknowns from here
+  // The solver reads the count of extra unknowns from p.kink: a stand-in that holds only the count.
+  // It would replace a real (D31) enrichment, and a row appended later would meet its empty
+  // interpolant, so neither may be there: the study asks for neither.
+  if (p.kink) throw std::logic_error("contact_end_study: the plain space was expected under the end's functions");
+  KinkEnrichment size_only;
   size_only.functions = k;
   p.kink = size_only;
 }
 
 // One solve with the end at theta_e; `fields` empty: the plain space. `shift` gets the fit's move of
-// the end (an angle, at most half a cell).
+// the end (an angle, at most half a cell). Solved without the refinement (D22), whose residual does
+// not know the end's functions.
 Answer solve_once(const Scene& scene, int n, double theta_e, const std::vector<EndField>& fields, double dense, double& shift) {
   SamplingSpec spec{SamplingKind::Edge, EdgeRows{}};
   const Grid whole = scene.grid(n);
@@ -129,6 +135,9 @@ Answer solve_once(const Scene& scene, int n, double theta_e, const std::vector<E
   const double h = g.h, a = kRadius, cx = g.lx(), cy = g.ly();
   const int N = g.unknowns(), k = static_cast<int>(fields.size());
   const ContactEnd end{cx, cy, a, M_PI + theta_e, -1, 0.05, 0.1};
+  const double ex = cx + a * std::cos(end.theta), ey = cy + a * std::sin(end.theta);
+  if (std::min({cx - ex, cy - ey, ex, ey}) < end.outer)  // the mirror lines, and the clamped edges
+    throw std::invalid_argument("--start: the end's cut-off would cross a mirror line or a clamped edge");
   lay_out(p, theta_e, dense);
   if (k) widen(p, end, fields);
   ExactOptions o;
@@ -147,8 +156,10 @@ Answer solve_once(const Scene& scene, int n, double theta_e, const std::vector<E
   out.max_w = w_at(cx, cy);
   out.theta_e = theta_e;
   for (int f = 0; f < k; ++f) out.coefficients.push_back(r.w[N + f]);
-  for (int e = 0; e < p.sampling.edge_size(); ++e)
-    if (p.sampling.rim_rows[e].point() && r.lambda[p.sampling.edge_begin + e] > 0) ++out.pushing;
+  for (int e = 0; e < p.sampling.edge_size(); ++e) {
+    const double beyond = end.theta - p.sampling.edge.theta[e];  // the quarter's end is free for smaller angles
+    if (p.sampling.rim_rows[e].point() && beyond > 0 && beyond < 4 * h / a && r.lambda[p.sampling.edge_begin + e] > 0) ++out.pushing;
+  }
   // The gap beyond the end from a quarter to six cells, and the fit's move, at most half a cell.
   std::vector<double> at, gap;
   for (int i = 0; i < 80; ++i) {
@@ -176,19 +187,28 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   const Scene scene = Scene::rectangle(lx, 1).over(Cylinder{lx / 2, 0.5, kRadius, kHeight});
   const std::vector<EndField> fields = plain ? std::vector<EndField>{} : std::vector<EndField>{EndField::Gap32, EndField::Gap52};
-  std::printf("%6s %12s %16s %12s %12s %6s %8s\n", "n", "theta_e", "max w", "c_32", "c_52", "moves", "pushing");
+  std::printf("%6s %12s %16s %12s %12s %6s %8s\n", "n", "theta_e", "max w", "c_32", "c_52", "moves", "pushing");  // pushing: point rows within four cells beyond the end that carry load
   for (int n = from; n <= to; n = step ? n + step : 2 * n) {
     double theta = start, shift = 0;
     Answer a;
     int moves = 0;
     for (; moves < 30; ++moves) {
-      a = solve_once(scene, n, theta, fields, dense, shift);
+      try {
+        a = solve_once(scene, n, theta, fields, dense, shift);
+      } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "contact_end_study: n = %d, end at %.9f: %s\n", n, theta, e.what());
+        return 2;
+      }
       if (!a.converged) {
         std::fprintf(stderr, "contact_end_study: the solve on n = %d did not converge\n", n);
         return 3;
       }
       if (std::abs(shift) < 1e-9) break;
       theta -= shift;  // the quarter's end is at pi + theta_e, free for smaller angles
+    }
+    if (moves == 30) {
+      std::fprintf(stderr, "contact_end_study: on n = %d the end still moved by %.2e after 30 moves\n", n, shift);
+      return 3;
     }
     std::printf("%6d %12.9f %16.12f %12.4e %12.4e %6d %8d\n", n, a.theta_e, a.max_w, a.coefficients.empty() ? 0.0 : a.coefficients[0],
                 a.coefficients.size() < 2 ? 0.0 : a.coefficients[1], moves, a.pushing);
