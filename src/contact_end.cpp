@@ -2,6 +2,7 @@
 #include "contact_end.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -65,27 +66,41 @@ EndDerivatives end_cutoff(const ContactEnd& e, double x, double y) {
                      X2 * s * s + X1 * c * c / p.rho);
 }
 
-EndValue end_function(const ContactEnd& e, EndField which, const Grid& g, double x, double y) {
-  const EndDerivatives X = end_cutoff(e, x, y);
-  if (X.w == 0) return {};
-  const EndDerivatives F = end_field(e, which, x, y);
-  int ex, ey;
-  double t, u;
-  if (!g.locate(x, y, ex, ey, t, u)) throw std::invalid_argument("end_function: the point is outside the grid");
-  const LocalBasis b = bfs_basis(t, u, g.h);
-  EndDerivatives I;  // I_h F from the four corners' values, slopes and twist
+namespace {
+// The 16 unknowns of I_h F on cell (ex, ey): each corner's value, slopes and twist of F.
+std::array<double, 16> interpolant_unknowns(const ContactEnd& e, EndField which, const Grid& g, int ex, int ey) {
+  std::array<double, 16> u{};
   for (int ay = 0; ay < 2; ++ay)
     for (int ax = 0; ax < 2; ++ax) {
       const EndDerivatives n = end_field(e, which, (ex + ax) * g.h, (ey + ay) * g.h);
       const double dof[4] = {n.w, n.wx, n.wy, n.wxy};
-      for (int c = 0; c < 4; ++c) {
-        const int j = 4 * (ax + 2 * ay) + c;
-        I.w += dof[c] * b.v[j], I.wx += dof[c] * b.dx[j], I.wy += dof[c] * b.dy[j];
-        I.wxx += dof[c] * b.dxx[j], I.wyy += dof[c] * b.dyy[j];
-      }
+      for (int c = 0; c < 4; ++c) u[4 * (ax + 2 * ay) + c] = dof[c];
     }
+  return u;
+}
+
+// chi (F - I_h F) at (x, y), given chi there (X, not 0), the cell's basis b there and I_h F's
+// unknowns u on the cell.
+EndValue end_function_in_cell(const ContactEnd& e, EndField which, const EndDerivatives& X, const std::array<double, 16>& u,
+                              const LocalBasis& b, double x, double y) {
+  const EndDerivatives F = end_field(e, which, x, y);
+  EndDerivatives I;
+  for (int j = 0; j < 16; ++j) {
+    I.w += u[j] * b.v[j], I.wx += u[j] * b.dx[j], I.wy += u[j] * b.dy[j];
+    I.wxx += u[j] * b.dxx[j], I.wyy += u[j] * b.dyy[j];
+  }
   const double d = F.w - I.w, dx = F.wx - I.wx, dy = F.wy - I.wy, lap = F.wxx + F.wyy - I.wxx - I.wyy;
   return {X.w * d, X.w * lap + 2 * (X.wx * dx + X.wy * dy) + d * (X.wxx + X.wyy)};
+}
+}  // namespace
+
+EndValue end_function(const ContactEnd& e, EndField which, const Grid& g, double x, double y) {
+  const EndDerivatives X = end_cutoff(e, x, y);
+  if (X.w == 0) return {};
+  int ex, ey;
+  double t, u;
+  if (!g.locate(x, y, ex, ey, t, u)) throw std::invalid_argument("end_function: the point is outside the grid");
+  return end_function_in_cell(e, which, X, interpolant_unknowns(e, which, g, ex, ey), bfs_basis(t, u, g.h), x, y);
 }
 
 double end_shift(const std::vector<double>& s, const std::vector<double>& gap) {
@@ -111,22 +126,27 @@ EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends
   // still takes in part. Across the rim, where the integrand kinks: 9 halvings, which leave a
   // relative error of order 4^-9 in the squares the rim cuts (an estimate, not measured).
   const int to_end = 30, to_rim = 9;
+  auto distance = [](double px, double py, double sx, double sy, double size) {
+    return std::hypot(std::max({sx - px, 0.0, px - sx - size}), std::max({sy - py, 0.0, py - sy - size}));
+  };
+  std::vector<double> px, py;  // the ends' points
+  for (const ContactEnd& e : ends) px.push_back(e.cx + e.a * std::cos(e.theta)), py.push_back(e.cy + e.a * std::sin(e.theta));
+  std::vector<double> lap(k);
+  std::vector<EndDerivatives> cut(k);
+  std::vector<std::array<double, 16>> interpolants(k);
   for (int ey = 0; ey < g.ny; ++ey)
     for (int ex = 0; ex < g.nx; ++ex) {
       const double x0 = ex * g.h, y0 = ey * g.h;
-      auto distance = [](double px, double py, double sx, double sy, double size) {
-        return std::hypot(std::max({sx - px, 0.0, px - sx - size}), std::max({sy - py, 0.0, py - sy - size}));
-      };
       bool near = false;
-      for (const ContactEnd& e : ends)
-        near = near || distance(e.cx + e.a * std::cos(e.theta), e.cy + e.a * std::sin(e.theta), x0, y0, g.h) < e.outer * 1.2 + g.h;
+      for (int f = 0; f < k; ++f) near = near || distance(px[f], py[f], x0, y0, g.h) < ends[f].outer * 1.2 + g.h;
       if (!near) continue;
       const auto dofs = g.element_dofs(ex, ey);
+      for (int f = 0; f < k; ++f) interpolants[f] = interpolant_unknowns(ends[f], fields[f], g, ex, ey);
       auto square = [&](auto&& self, double sx, double sy, double size, int depth) -> void {
         bool split = false;
-        for (const ContactEnd& e : ends) {
-          const double px = e.cx + e.a * std::cos(e.theta), py = e.cy + e.a * std::sin(e.theta);
-          split = split || (depth < to_end && distance(px, py, sx, sy, size) < size) ||
+        for (int f = 0; f < k; ++f) {
+          const ContactEnd& e = ends[f];
+          split = split || (depth < to_end && distance(px[f], py[f], sx, sy, size) < size) ||
                   (depth < to_rim && std::abs(std::hypot(sx + size / 2 - e.cx, sy + size / 2 - e.cy) - e.a) < 0.75 * size);
         }
         if (split) {
@@ -139,11 +159,12 @@ EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends
           for (size_t j = 0; j < q.points.size(); ++j) {
             const double x = sx + size * q.points[i], y = sy + size * q.points[j];
             const double wq = size * size * q.weights[i] * q.weights[j];
-            std::vector<double> lap(k);
             bool any = false;
-            for (int f = 0; f < k; ++f) any = (lap[f] = end_function(ends[f], fields[f], g, x, y).lap) != 0 || any;
+            for (int f = 0; f < k; ++f) any = (cut[f] = end_cutoff(ends[f], x, y)).w != 0 || any;
             if (!any) continue;
             const LocalBasis b = bfs_basis((x - x0) / g.h, (y - y0) / g.h, g.h);
+            for (int f = 0; f < k; ++f)
+              lap[f] = cut[f].w == 0 ? 0.0 : end_function_in_cell(ends[f], fields[f], cut[f], interpolants[f], b, x, y).lap;
             for (int i = 0; i < 16; ++i)
               if (dofs[i] >= 0)
                 for (int f = 0; f < k; ++f) out.border(dofs[i], f) += wq * (b.dxx[i] + b.dyy[i]) * lap[f];
