@@ -42,18 +42,10 @@ struct Answer {
 // cell apart elsewhere and `dense` per cell for four cells beyond each end.
 void lay_out(Problem& p, double theta_e, double dense) {
   const double h = p.grid.h, cell = h / kRadius;
-  RimLayout L;
-  L.periodic = false;
-  for (double base : {0.0, M_PI}) {
-    SplineArc arc;
-    arc.breaks = graded_breaks(base + theta_e, base + M_PI - theta_e, 2 * cell, 4 * cell);
-    L.arcs.push_back(arc);
-  }
-  for (double t : edge_points(p.scene.edge, h).theta) {
-    bool on = false;
-    for (const SplineArc& arc : L.arcs) on = on || arc.contains(t);
-    if (!on) L.points.push_back(t);
-  }
+  ContactArcs contact;
+  contact.arcs = {{theta_e, M_PI - theta_e}, {M_PI + theta_e, 2 * M_PI - theta_e}};
+  // The layout (D28) makes for a contact, with no margin and the ends snapped only to round-off.
+  RimLayout L = layout_for(contact, 0, 2 * cell, 4 * cell, edge_points(p.scene.edge, h).theta, 1e-14);
   for (double end : {theta_e, M_PI - theta_e, M_PI + theta_e, 2 * M_PI - theta_e}) {
     const double free = (end == theta_e || end == M_PI + theta_e) ? -1 : 1;
     for (int i = 1; i <= 4 * dense; ++i) L.points.push_back(std::fmod(end + free * i * cell / dense + 4 * M_PI, 2 * M_PI));
