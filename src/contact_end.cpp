@@ -116,10 +116,12 @@ double end_shift(const std::vector<double>& s, const std::vector<double>& gap) {
   return -0.4 * c[0] / c[1];
 }
 
-EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends, const std::vector<EndField>& fields) {
+EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends, const std::vector<EndField>& fields,
+                              int others, const OtherLaplacians& laplacians) {
   if (ends.size() != fields.size()) throw std::invalid_argument("assemble_end_blocks: one field per end");
   const int k = static_cast<int>(ends.size()), N = g.unknowns();
-  EndBlocks out{Eigen::MatrixXd::Zero(N, k), Eigen::MatrixXd::Zero(k, k)};
+  EndBlocks out{Eigen::MatrixXd::Zero(N, k), Eigen::MatrixXd::Zero(k, k), Eigen::MatrixXd::Zero(others, k)};
+  Eigen::VectorXd olap(others);
   const Quadrature1D q = gauss_legendre(6);
   // Halvings towards an end, where the integrand of the functions' own block grows like 1/rho: the
   // square left after 30 holds a share of about 2^-30 of the cell's, which the Gauss rule on it
@@ -170,6 +172,11 @@ EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends
                 for (int f = 0; f < k; ++f) out.border(dofs[i], f) += wq * (b.dxx[i] + b.dyy[i]) * lap[f];
             for (int f = 0; f < k; ++f)
               for (int l = 0; l < k; ++l) out.own(f, l) += wq * lap[f] * lap[l];
+            if (others == 0) continue;
+            laplacians(ex, ey, x, y, olap);
+            for (int j = 0; j < others; ++j)
+              if (olap[j] != 0)
+                for (int f = 0; f < k; ++f) out.cross(j, f) += wq * olap[j] * lap[f];
           }
       };
       square(square, x0, y0, g.h, 0);

@@ -18,6 +18,7 @@
 // the field of the end (gap -4 s^(5/2) on the free side); F_32, whose load s^(-3/2) is not
 // integrable, is the field of an end put in the wrong place.
 #pragma once
+#include <functional>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -67,9 +68,13 @@ double end_shift(const std::vector<double>& s, const std::vector<double>& gap);
 // Lap psi_l). Each cell near an end is cut into squares, halved towards the end (its second
 // derivatives are singular there) and towards the rim (they kink across it), with 6 x 6 Gauss
 // points on each.
+// `others` more functions of the space (another enrichment's, D31's) get cross(j, k) = (Lap o_j,
+// Lap psi_k), with their Laplacians at (x, y) in cell (ex, ey) from `laplacians`.
 struct EndBlocks {
-  Eigen::MatrixXd border, own;
+  Eigen::MatrixXd border, own, cross;
 };
-EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends, const std::vector<EndField>& fields);
+using OtherLaplacians = std::function<void(int ex, int ey, double x, double y, Eigen::VectorXd& out)>;
+EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends, const std::vector<EndField>& fields,
+                              int others = 0, const OtherLaplacians& laplacians = {});
 
 }  // namespace plate

@@ -9,6 +9,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "bfs_element.hpp"
 #include "contact_end.hpp"
 
 using namespace plate;
@@ -151,6 +152,34 @@ TEST(ContactEnd, TheBlocksAreSymmetricPositiveAndLocal) {
     }
   EXPECT_GT(near, 20);
   EXPECT_EQ(far, 0);
+}
+
+// The cross block with other functions of the space: given, as those, three of the grid's own basis
+// functions (their Laplacians read off the cell's basis), it must give their rows of the border.
+TEST(ContactEnd, TheCrossBlockOfOtherFunctionsMatchesTheBorderForGridFunctions) {
+  const ContactEnd e = scene_end();
+  const Grid g = make_grid(32, 1.0, 0.5);
+  const std::vector<EndField> fields{EndField::Gap32, EndField::Gap52};
+  const EndBlocks plain = assemble_end_blocks(g, {e, e}, fields);
+  std::vector<int> picked;  // three unknowns the border reaches
+  for (int i = 0; i < g.unknowns() && picked.size() < 3; i += 7)
+    if (plain.border.row(i).norm() > 0) picked.push_back(i);
+  ASSERT_EQ(picked.size(), 3u);
+  const OtherLaplacians basis = [&](int ex, int ey, double x, double y, Eigen::VectorXd& out) {
+    out.setZero();
+    const auto dofs = g.element_dofs(ex, ey);
+    const LocalBasis b = bfs_basis((x - ex * g.h) / g.h, (y - ey * g.h) / g.h, g.h);
+    for (int i = 0; i < 16; ++i)
+      for (int j = 0; j < 3; ++j)
+        if (dofs[i] == picked[j]) out[j] += b.dxx[i] + b.dyy[i];
+  };
+  const EndBlocks b = assemble_end_blocks(g, {e, e}, fields, 3, basis);
+  for (int j = 0; j < 3; ++j)
+    for (int f = 0; f < 2; ++f) {
+      const double want = plain.border(picked[j], f);
+      EXPECT_NEAR(b.cross(j, f), want, 1e-12 * std::abs(want)) << "unknown " << picked[j] << ", field " << f;
+    }
+  EXPECT_EQ(b.border, plain.border);
 }
 
 // The fit iterated: the end put at e, the gap sampled beyond it (where it is open), e moved by the
