@@ -4,10 +4,13 @@
 // mirror lines leave (which holds one end, at pi + theta_e): rows averaged against graded clamped
 // splines on the contact arcs [theta_e, pi - theta_e] and its images, points a cell apart off them
 // and `--dense` per cell for four cells beyond each end; the space widened by chi (F - I_h F) of
-// F_32 and F_52 at the end; solved exactly (no refinement: its residual does not know the new
-// functions); the end moved by the fit (at most half a cell a step) until it moves less than 1e-9.
-// Prints, per grid, the end, max w (at the centre), the two coefficients and the moves.
-//   build/contact_end_study --lx 2 --from 128 --to 320 --step 16
+// F_32 and F_52 at the end, and with --kink by (D31)'s functions too (their cross block with the
+// end's: assemble_end_blocks' `others`); solved exactly (no refinement: its residual does not know
+// the new functions); the end moved by the fit (at most half a cell a step) until it moves less
+// than 1e-9, and with --consistent then pushed on, by bisection, to where no point beyond it bears
+// load. Prints, per grid, the end, max w (at the centre), the two coefficients, the moves and the
+// point rows beyond the end that push.
+//   build/contact_end_study --lx 2 --from 160 --to 320 --step 16 --kink
 // Not run by make: what it measures is in the closing notes of issue 39.
 #include <CLI/CLI.hpp>
 
@@ -36,11 +39,14 @@ struct Answer {
   double max_w = 0, theta_e = 0;
   std::vector<double> coefficients;
   int pushing = 0;  // point rows beyond the end that carry load
+  double nearest_push = 0, push_load = 0;  // the first of them: cells beyond the end, and its line load
 };
 
+bool with_kink = false;  // the space widened by (D31) too
+
 // The rows for contact on [theta_e, pi - theta_e] and its images: graded splines there, points a
-// cell apart elsewhere and `dense` per cell for four cells beyond each end.
-void lay_out(Problem& p, double theta_e, double dense) {
+// cell apart elsewhere and `dense` per cell for four cells beyond each end (from `skip` cells on).
+void lay_out(Problem& p, double theta_e, double dense, double skip) {
   const double h = p.grid.h, cell = h / kRadius;
   ContactArcs contact;
   contact.arcs = {{theta_e, M_PI - theta_e}, {M_PI + theta_e, 2 * M_PI - theta_e}};
@@ -48,7 +54,16 @@ void lay_out(Problem& p, double theta_e, double dense) {
   RimLayout L = layout_for(contact, 0, 2 * cell, 4 * cell, edge_points(p.scene.edge, h).theta, 1e-14);
   for (double end : {theta_e, M_PI - theta_e, M_PI + theta_e, 2 * M_PI - theta_e}) {
     const double free = (end == theta_e || end == M_PI + theta_e) ? -1 : 1;
-    for (int i = 1; i <= 4 * dense; ++i) L.points.push_back(std::fmod(end + free * i * cell / dense + 4 * M_PI, 2 * M_PI));
+    // The dense points stand for the lattice's there: a lattice point a hair beyond the end would
+    // bear the load the dense points share (at n = 128 one lies 0.004 cells beyond).
+    L.points.erase(std::remove_if(L.points.begin(), L.points.end(),
+                                  [&](double t) {
+                                    const double b = std::remainder(t - end, 2 * M_PI) * free;
+                                    return b > 0 && b < 4.01 * cell;
+                                  }),
+                   L.points.end());
+    for (int i = 1; i <= 4 * dense; ++i)
+      if (i >= skip * dense) L.points.push_back(std::fmod(end + free * i * cell / dense + 4 * M_PI, 2 * M_PI));
   }
   std::sort(L.points.begin(), L.points.end());
   lay_out_rim(p, L);
@@ -61,20 +76,45 @@ void widen(Problem& p, const ContactEnd& end, const std::vector<EndField>& field
   const Grid& g = p.grid;
   const double h = g.h, a = kRadius, cx = g.lx(), cy = g.ly();
   const int N = g.unknowns(), k = static_cast<int>(fields.size());
+  const int Kk = p.kink ? p.kink->size() : 0, base = N + Kk;  // (D31)'s functions come first
   const std::vector<ContactEnd> ends(k, end);
-  const EndBlocks blocks = assemble_end_blocks(g, ends, fields);
+  const Eigen::MatrixXd P = p.kink ? Eigen::MatrixXd(p.kink_interp) : Eigen::MatrixXd();
+  // The Laplacian of each psi_j of (D31) at (x, y): its interpolant's part read off P on the cell.
+  const OtherLaplacians kink_laplacians = [&](int ex, int ey, double x, double y, Eigen::VectorXd& out) {
+    out.setZero();
+    if (!kink_near(*p.kink, x, y)) return;
+    const auto dofs = g.element_dofs(ex, ey);
+    const LocalBasis b = bfs_basis((x - ex * h) / h, (y - ey * h) / h, h);
+    VectorXd unit = VectorXd::Zero(Kk);
+    for (int j = 0; j < Kk; ++j) {
+      KinkValue I;
+      for (int i = 0; i < 16; ++i)
+        if (dofs[i] >= 0) {
+          const double c = P(dofs[i], j);
+          I.w += c * b.v[i], I.wx += c * b.dx[i], I.wy += c * b.dy[i], I.wxx += c * b.dxx[i], I.wxy += c * b.dxy[i], I.wyy += c * b.dyy[i];
+        }
+      unit[j] = 1;
+      const KinkValue v = kink_field(*p.kink, unit, I, x, y);
+      unit[j] = 0;
+      out[j] = v.wxx + v.wyy;
+    }
+  };
+  const EndBlocks blocks = assemble_end_blocks(g, ends, fields, Kk, kink_laplacians);
   std::vector<Eigen::Triplet<double>> t;
   for (int c = 0; c < p.K.outerSize(); ++c)
     for (SpMat::InnerIterator it(p.K, c); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
   for (int i = 0; i < N; ++i)
     for (int f = 0; f < k; ++f)
-      if (blocks.border(i, f) != 0) t.emplace_back(i, N + f, blocks.border(i, f)), t.emplace_back(N + f, i, blocks.border(i, f));
+      if (blocks.border(i, f) != 0) t.emplace_back(i, base + f, blocks.border(i, f)), t.emplace_back(base + f, i, blocks.border(i, f));
+  for (int j = 0; j < Kk; ++j)
+    for (int f = 0; f < k; ++f)
+      if (blocks.cross(j, f) != 0) t.emplace_back(N + j, base + f, blocks.cross(j, f)), t.emplace_back(base + f, N + j, blocks.cross(j, f));
   for (int f = 0; f < k; ++f)
-    for (int l = 0; l < k; ++l) t.emplace_back(N + f, N + l, blocks.own(f, l));
-  SpMat K(N + k, N + k);
+    for (int l = 0; l < k; ++l) t.emplace_back(base + f, base + l, blocks.own(f, l));
+  SpMat K(base + k, base + k);
   K.setFromTriplets(t.begin(), t.end());
   p.K = std::move(K);
-  p.F.conservativeResize(N + k);
+  p.F.conservativeResize(base + k);
   p.F.tail(k).setZero();  // the scene carries no load, so (f, psi_k) = 0
   const Sampling& s = p.sampling;
   std::vector<Eigen::Triplet<double>> ts;
@@ -102,55 +142,63 @@ void widen(Problem& p, const ContactEnd& end, const std::vector<EndField>& field
       }
     }
     for (int f = 0; f < k; ++f)
-      if (v[f] != 0) ts.emplace_back(r, N + f, v[f]);
+      if (v[f] != 0) ts.emplace_back(r, base + f, v[f]);
   }
-  RowSpMat S(s.size(), N + k);
+  RowSpMat S(s.size(), base + k);
   S.setFromTriplets(ts.begin(), ts.end());
   p.sampling.S = std::move(S);
-  // The solver reads the count of extra unknowns from p.kink: a stand-in that holds only the count.
-  // It would replace a real (D31) enrichment, and a row appended later would meet its empty
-  // interpolant, so neither may be there: the study asks for neither.
-  if (p.kink) throw std::logic_error("contact_end_study: the plain space was expected under the end's functions");
-  KinkEnrichment size_only;
-  size_only.functions = k;
-  p.kink = size_only;
+  // The solver reads the count of extra unknowns from p.kink: (D31)'s count is raised by the end's
+  // functions for the solve (solve_once puts it back), or a stand-in holds only the count. Rows
+  // appended later would meet a short interpolant, so the study appends none.
+  if (p.kink) {
+    p.kink->functions += k;
+  } else {
+    KinkEnrichment size_only;
+    size_only.functions = k;
+    p.kink = size_only;
+  }
 }
 
 // One solve with the end at theta_e; `fields` empty: the plain space. `shift` gets the fit's move of
 // the end (an angle, at most half a cell). Solved without the refinement (D22), whose residual does
 // not know the end's functions.
-Answer solve_once(const Scene& scene, int n, double theta_e, const std::vector<EndField>& fields, double dense, double& shift) {
+Answer solve_once(const Scene& scene, int n, double theta_e, const std::vector<EndField>& fields, double dense, double skip, double& shift) {
   SamplingSpec spec{SamplingKind::Edge, EdgeRows{}};
+  if (with_kink) spec.enrich.kind = EnrichSpec::Kind::Ring;
   const Grid whole = scene.grid(n);
   Problem p = make_problem(scene, part_of(whole, find_mirrors(scene, whole, spec)), spec);
   const Grid& g = p.grid;
   const double h = g.h, a = kRadius, cx = g.lx(), cy = g.ly();
-  const int N = g.unknowns(), k = static_cast<int>(fields.size());
+  const int k = static_cast<int>(fields.size());
   const ContactEnd end{cx, cy, a, M_PI + theta_e, -1, 0.05, 0.1};
   const double ex = cx + a * std::cos(end.theta), ey = cy + a * std::sin(end.theta);
   if (std::min({cx - ex, cy - ey, ex, ey}) < end.outer)  // the mirror lines, and the clamped edges
     throw std::invalid_argument("--start: the end's cut-off would cross a mirror line or a clamped edge");
-  lay_out(p, theta_e, dense);
+  lay_out(p, theta_e, dense, skip);
   if (k) widen(p, end, fields);
   ExactOptions o;
   o.refine = false;
   const ExactResult r = solve_exact_rows(p, o, NodeSet{}, RowExchange{}, nullptr);
-  p.kink.reset();
-  const VectorXd grid_w = r.w.head(N);
-  const PlateField field(p, grid_w);
+  if (with_kink) p.kink->functions -= k;
+  else p.kink.reset();
+  const int base = p.unknowns();
+  const VectorXd plate_w = r.w.head(base);
+  const PlateField field(p, plate_w);
   auto w_at = [&](double x, double y) {
     double w = field.at(x, y).w;
-    for (int f = 0; f < k; ++f) w += r.w[N + f] * end_function(end, fields[f], g, x, y).w;
+    for (int f = 0; f < k; ++f) w += r.w[base + f] * end_function(end, fields[f], g, x, y).w;
     return w;
   };
   Answer out;
   out.converged = r.converged;
   out.max_w = w_at(cx, cy);
   out.theta_e = theta_e;
-  for (int f = 0; f < k; ++f) out.coefficients.push_back(r.w[N + f]);
+  for (int f = 0; f < k; ++f) out.coefficients.push_back(r.w[base + f]);
   for (int e = 0; e < p.sampling.edge_size(); ++e) {
     const double beyond = end.theta - p.sampling.edge.theta[e];  // the quarter's end is free for smaller angles
-    if (p.sampling.rim_rows[e].point() && beyond > 0 && beyond < 4 * h / a && r.lambda[p.sampling.edge_begin + e] > 0) ++out.pushing;
+    if (p.sampling.rim_rows[e].point() && beyond > 0 && beyond < 4 * h / a && r.lambda[p.sampling.edge_begin + e] > 0) {
+      if (!out.pushing++) out.nearest_push = beyond * a / h, out.push_load = r.lambda[p.sampling.edge_begin + e];
+    }
   }
   // The gap beyond the end from a quarter to six cells, and the fit's move, at most half a cell.
   std::vector<double> at, gap;
@@ -166,27 +214,32 @@ Answer solve_once(const Scene& scene, int n, double theta_e, const std::vector<E
 
 int main(int argc, char** argv) {
   CLI::App app{"The lift-off scene with the contact's ends carried and located (issue 39's next step)."};
-  double lx = 2, start = 0.99, dense = 8;
+  double lx = 2, start = 0.99, dense = 8, skip = 0;
   int from = 64, to = 512, step = 0;
-  bool plain = false;
+  bool plain = false, consistent = false;
   app.add_option("--lx", lx, "the plate's length (height 1), the cylinder at its centre")->check(CLI::Range(1.2, 4.0));
   app.add_option("--start", start, "the first guess of theta_e, in radians")->check(CLI::Range(0.5, 1.5));
   app.add_option("--from", from, "cells along x on the first grid")->check(CLI::Range(32, 2048));
   app.add_option("--to", to, "cells along x on the last grid")->check(CLI::Range(32, 2048));
   app.add_option("--step", step, "cells added from grid to grid (0: doubled)")->check(CLI::Range(0, 512));
   app.add_option("--dense", dense, "point rows per cell for four cells beyond each end")->check(CLI::Range(1.0, 32.0));
+  app.add_option("--skip", skip, "no dense point rows within this many cells beyond each end")->check(CLI::Range(0.0, 4.0));
+  app.add_flag("--consistent", consistent, "then extend the contact by bisection until no point beyond an end pushes");
+  app.add_flag("--kink", with_kink, "the kink of the line load carried too (D31)");
   app.add_flag("--plain", plain, "the plain space (the end still located by the fit)");
   CLI11_PARSE(app, argc, argv);
   const Scene scene = Scene::rectangle(lx, 1).over(Cylinder{lx / 2, 0.5, kRadius, kHeight});
   const std::vector<EndField> fields = plain ? std::vector<EndField>{} : std::vector<EndField>{EndField::Gap32, EndField::Gap52};
-  std::printf("%6s %12s %16s %12s %12s %6s %8s\n", "n", "theta_e", "max w", "c_32", "c_52", "moves", "pushing");  // pushing: point rows within four cells beyond the end that carry load
+  // pushing: point rows within four cells beyond the end that carry load; the first at `at` cells
+  // beyond the end, with line load `load`.
+  std::printf("%6s %12s %16s %12s %12s %6s %8s %7s %10s\n", "n", "theta_e", "max w", "c_32", "c_52", "moves", "pushing", "at", "load");
   for (int n = from; n <= to; n = step ? n + step : 2 * n) {
     double theta = start, shift = 0;
     Answer a;
     int moves = 0;
     for (; moves < 30; ++moves) {
       try {
-        a = solve_once(scene, n, theta, fields, dense, shift);
+        a = solve_once(scene, n, theta, fields, dense, skip, shift);
       } catch (const std::invalid_argument& e) {
         std::fprintf(stderr, "contact_end_study: n = %d, end at %.9f: %s\n", n, theta, e.what());
         return 2;
@@ -202,8 +255,21 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "contact_end_study: on n = %d the end still moved by %.2e after 30 moves\n", n, shift);
       return 3;
     }
-    std::printf("%6d %12.9f %16.12f %12.4e %12.4e %6d %8d\n", n, a.theta_e, a.max_w, a.coefficients.empty() ? 0.0 : a.coefficients[0],
-                a.coefficients.size() < 2 ? 0.0 : a.coefficients[1], moves, a.pushing);
+    if (consistent && a.pushing) {  // the shortest extension of the contact at which no point beyond pushes
+      const double cell = (lx / n) / kRadius;
+      double lo = theta, hi = theta - 0.5 * cell;
+      Answer b = solve_once(scene, n, hi, fields, dense, skip, shift);
+      if (b.pushing) { std::fprintf(stderr, "still pushing half a cell on\n"); return 3; }
+      for (int it = 0; it < 14; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        Answer m = solve_once(scene, n, mid, fields, dense, skip, shift);
+        if (m.pushing) lo = mid; else hi = mid, b = m;
+      }
+      a = b;
+    }
+    std::printf("%6d %12.9f %16.12f %12.4e %12.4e %6d %8d %7.4f %10.3e\n", n, a.theta_e, a.max_w,
+                a.coefficients.empty() ? 0.0 : a.coefficients[0], a.coefficients.size() < 2 ? 0.0 : a.coefficients[1], moves,
+                a.pushing, a.nearest_push, a.push_load);
     std::fflush(stdout);
   }
 }
