@@ -103,6 +103,28 @@ EndValue end_function(const ContactEnd& e, EndField which, const Grid& g, double
   return end_function_in_cell(e, which, X, interpolant_unknowns(e, which, g, ex, ey), bfs_basis(t, u, g.h), x, y);
 }
 
+EndDerivatives end_function_derivatives(const ContactEnd& e, EndField which, const Grid& g, double x, double y) {
+  const EndDerivatives X = end_cutoff(e, x, y);
+  if (X.w == 0) return {};
+  int ex, ey;
+  double t, u;
+  if (!g.locate(x, y, ex, ey, t, u)) throw std::invalid_argument("end_function_derivatives: the point is outside the grid");
+  const std::array<double, 16> c = interpolant_unknowns(e, which, g, ex, ey);
+  const LocalBasis b = bfs_basis(t, u, g.h);
+  EndDerivatives D = end_field(e, which, x, y);  // then D = F - I_h F
+  for (int j = 0; j < 16; ++j) {
+    D.w -= c[j] * b.v[j], D.wx -= c[j] * b.dx[j], D.wy -= c[j] * b.dy[j];
+    D.wxx -= c[j] * b.dxx[j], D.wxy -= c[j] * b.dxy[j], D.wyy -= c[j] * b.dyy[j];
+  }
+  // The product rule for chi D.
+  return {X.w * D.w,
+          X.w * D.wx + X.wx * D.w,
+          X.w * D.wy + X.wy * D.w,
+          X.w * D.wxx + 2 * X.wx * D.wx + X.wxx * D.w,
+          X.w * D.wxy + X.wx * D.wy + X.wy * D.wx + X.wxy * D.w,
+          X.w * D.wyy + 2 * X.wy * D.wy + X.wyy * D.w};
+}
+
 double end_shift(const std::vector<double>& s, const std::vector<double>& gap) {
   if (s.size() != gap.size() || s.size() < 3) throw std::invalid_argument("end_shift: three or more samples, one gap each");
   Eigen::MatrixXd A(s.size(), 3);

@@ -54,6 +54,9 @@ struct EndValue {
   double w = 0, lap = 0;
 };
 EndValue end_function(const ContactEnd& e, EndField f, const Grid& g, double x, double y);
+// The same function with its slopes and second derivatives: what a field read at a point (moments,
+// extrema) needs of it.
+EndDerivatives end_function_derivatives(const ContactEnd& e, EndField f, const Grid& g, double x, double y);
 
 // Where the end lies, from the gap g(s) that a solve leaves at arc lengths s > 0 into the free side
 // of an end put at s = 0: least squares of g on s^(3/2), s^(5/2), s^(7/2). The gap of an end at
