@@ -148,7 +148,7 @@ SceneSolution solve_exact_scene(const Scene& scene, int n, const SamplingSpec& s
   s.result.w = unfold_unknowns(g, s.solved.grid, s.part_w);
   if (s.solved.kink) {  // the part's functions (D31) as the whole plate's, each spline its own
     VectorXd c;
-    attach_kink(*s.unfolded, unfold_kink(*s.solved.kink, s.part_w.tail(s.solved.kink->size()), c));
+    attach_kink(*s.unfolded, unfold_kink(*s.solved.kink, s.part_w.segment(s.solved.grid.unknowns(), s.solved.kink->size()), c));
     s.result.w.conservativeResize(s.unfolded->unknowns());
     s.result.w.tail(c.size()) = c;
   }

@@ -40,7 +40,9 @@ PointValues plus(const PointValues& a, const PointValues& b) {
 }  // namespace
 
 PlateField::PlateField(const Problem& p, const VectorXd& w) : p_(p), w_(w) {
-  if (p.kink) c_ = w.tail(p.kink->size()), Pc_ = p.kink_interp * c_;
+  const int N = p.grid.unknowns();
+  if (p.kink) c_ = w.segment(N, p.kink->size()), Pc_ = p.kink_interp * c_;
+  if (!p.ends.empty()) e_ = w.segment(N + p.kink_size(), static_cast<Eigen::Index>(p.ends.size()));
 }
 
 // The enrichment's share (D31) at (x, y), with its interpolant's part I read by the caller.
@@ -49,19 +51,41 @@ PointValues PlateField::share(const PointValues& I, double x, double y) const {
   return {k.w, k.wx, k.wy, k.wxx, k.wxy, k.wyy};
 }
 
+// The ends' share at (x, y). Their functions live on the grid's part of the plate (attach_ends keeps
+// each cut-off clear of the mirror lines), so a point of a mirror image is read at its image in the
+// part, with the slopes across the line turned as evaluate turns them.
+PointValues PlateField::ends_at(double x, double y) const {
+  PointValues v{0, 0, 0, 0, 0, 0};
+  if (p_.ends.empty()) return v;
+  const Grid& g = p_.grid;
+  int flips = 0;
+  if (g.mirror_x && x > g.lx()) x = 2 * g.lx() - x, flips |= 1;
+  if (g.mirror_y && y > g.ly()) y = 2 * g.ly() - y, flips |= 2;
+  for (size_t f = 0; f < p_.ends.size(); ++f) {
+    const EndDerivatives d = end_function_derivatives(p_.ends[f], p_.end_fields[f], g, x, y);
+    const double c = e_[static_cast<Eigen::Index>(f)];
+    v = plus(v, {c * d.w, c * d.wx, c * d.wy, c * d.wxx, c * d.wxy, c * d.wyy});
+  }
+  if (flips & 1) v.wx = -v.wx, v.wxy = -v.wxy;
+  if (flips & 2) v.wy = -v.wy, v.wxy = -v.wxy;
+  return v;
+}
+
 PointValues PlateField::enrichment_at(double x, double y) const {
-  if (!p_.kink || !kink_near(*p_.kink, x, y)) return {0, 0, 0, 0, 0, 0};
-  return share(evaluate(p_.grid, Pc_, x, y), x, y);
+  const PointValues e = ends_at(x, y);
+  if (!p_.kink || !kink_near(*p_.kink, x, y)) return e;
+  return plus(e, share(evaluate(p_.grid, Pc_, x, y), x, y));
 }
 
 PointValues PlateField::enrichment_in(int ex, int ey, double t, double s, double x, double y) const {
-  if (!p_.kink || !kink_near(*p_.kink, x, y)) return {0, 0, 0, 0, 0, 0};
-  return share(evaluate_in(p_.grid, Pc_, ex, ey, t, s), x, y);
+  const PointValues e = ends_at(x, y);
+  if (!p_.kink || !kink_near(*p_.kink, x, y)) return e;
+  return plus(e, share(evaluate_in(p_.grid, Pc_, ex, ey, t, s), x, y));
 }
 
 PointValues PlateField::at(double x, double y) const {
   const PointValues v = evaluate(p_.grid, w_, x, y);
-  return p_.kink ? plus(v, enrichment_at(x, y)) : v;
+  return p_.kink || !p_.ends.empty() ? plus(v, enrichment_at(x, y)) : v;
 }
 
 PointValues evaluate(const Problem& p, const VectorXd& w, double x, double y) { return PlateField(p, w).at(x, y); }

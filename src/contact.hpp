@@ -20,15 +20,17 @@ class PlateField {
  public:
   PlateField(const Problem& p, const VectorXd& w);
   PointValues at(double x, double y) const;
-  PointValues enrichment_at(double x, double y) const;  // the enrichment's share alone (zero without one)
+  PointValues enrichment_at(double x, double y) const;  // the enrichments' share alone (zero without one)
   // The same read in element (ex, ey) of p's grid at local (t, s), the point (x, y).
   PointValues enrichment_in(int ex, int ey, double t, double s, double x, double y) const;
 
  private:
   PointValues share(const PointValues& interpolant, double x, double y) const;
+  PointValues ends_at(double x, double y) const;
   const Problem& p_;
   const VectorXd& w_;
-  VectorXd c_, Pc_;  // the enrichment's coefficients, and its interpolant's
+  VectorXd c_, Pc_;  // (D31)'s coefficients, and its interpolant's
+  VectorXd e_;       // the ends' coefficients
 };
 // One point of it.
 PointValues evaluate(const Problem& p, const VectorXd& w, double x, double y);

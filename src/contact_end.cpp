@@ -139,10 +139,10 @@ double end_shift(const std::vector<double>& s, const std::vector<double>& gap) {
 }
 
 EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends, const std::vector<EndField>& fields,
-                              int others, const OtherLaplacians& laplacians) {
+                              int others, const OtherLaplacians& laplacians, const std::function<double(double, double)>* load) {
   if (ends.size() != fields.size()) throw std::invalid_argument("assemble_end_blocks: one field per end");
   const int k = static_cast<int>(ends.size()), N = g.unknowns();
-  EndBlocks out{Eigen::MatrixXd::Zero(N, k), Eigen::MatrixXd::Zero(k, k), Eigen::MatrixXd::Zero(others, k)};
+  EndBlocks out{Eigen::MatrixXd::Zero(N, k), Eigen::MatrixXd::Zero(k, k), Eigen::MatrixXd::Zero(others, k), Eigen::VectorXd::Zero(k)};
   Eigen::VectorXd olap(others);
   const Quadrature1D q = gauss_legendre(6);
   // Halvings towards an end, where the integrand of the functions' own block grows like 1/rho: the
@@ -187,8 +187,12 @@ EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends
             for (int f = 0; f < k; ++f) any = (cut[f] = end_cutoff(ends[f], x, y)).w != 0 || any;
             if (!any) continue;
             const LocalBasis b = bfs_basis((x - x0) / g.h, (y - y0) / g.h, g.h);
-            for (int f = 0; f < k; ++f)
-              lap[f] = cut[f].w == 0 ? 0.0 : end_function_in_cell(ends[f], fields[f], cut[f], interpolants[f], b, x, y).lap;
+            const double fxy = load ? (*load)(x, y) : 0.0;
+            for (int f = 0; f < k; ++f) {
+              const EndValue v = cut[f].w == 0 ? EndValue{} : end_function_in_cell(ends[f], fields[f], cut[f], interpolants[f], b, x, y);
+              lap[f] = v.lap;
+              out.load[f] += wq * fxy * v.w;
+            }
             for (int i = 0; i < 16; ++i)
               if (dofs[i] >= 0)
                 for (int f = 0; f < k; ++f) out.border(dofs[i], f) += wq * (b.dxx[i] + b.dyy[i]) * lap[f];

@@ -72,12 +72,15 @@ double end_shift(const std::vector<double>& s, const std::vector<double>& gap);
 // derivatives are singular there) and towards the rim (they kink across it), with 6 x 6 Gauss
 // points on each.
 // `others` more functions of the space (another enrichment's, D31's) get cross(j, k) = (Lap o_j,
-// Lap psi_k), with their Laplacians at (x, y) in cell (ex, ey) from `laplacians`.
+// Lap psi_k), with their Laplacians at (x, y) in cell (ex, ey) from `laplacians`; a `load` f gives
+// load(k) = (f, psi_k).
 struct EndBlocks {
   Eigen::MatrixXd border, own, cross;
+  Eigen::VectorXd load;
 };
 using OtherLaplacians = std::function<void(int ex, int ey, double x, double y, Eigen::VectorXd& out)>;
 EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends, const std::vector<EndField>& fields,
-                              int others = 0, const OtherLaplacians& laplacians = {});
+                              int others = 0, const OtherLaplacians& laplacians = {},
+                              const std::function<double(double, double)>* load = nullptr);
 
 }  // namespace plate

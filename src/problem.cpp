@@ -97,17 +97,27 @@ static SpMat sampling_mass(const Problem& p) {
 // With the enrichment (D31) every row gets a column per function, psi_k read at its sample. On the
 // rim psi_k = -I_h F_k, so an edge row's columns are -S P; at a node psi_k vanishes, so an interior
 // row's are zero. Made anew from the grid's columns each time rows are made or added.
+// The ends' functions (attach_ends) get theirs read by each edge row's own quadrature: they do not
+// vanish on the free part of the rim. At the nodes they vanish with their slopes.
 static void fit_columns(Problem& p) {
-  const int N = p.grid.unknowns();
-  if (!p.kink) return;
+  const int N = p.grid.unknowns(), base = N + p.kink_size();
+  if (!p.kink && p.ends.empty()) return;
   const int first = p.sampling.edge_begin;
-  const RowSpMat SP = p.sampling.S.bottomRows(p.sampling.edge_size()).leftCols(N) * p.kink_interp;  // edge rows only
+  RowSpMat SP;
+  if (p.kink) SP = p.sampling.S.bottomRows(p.sampling.edge_size()).leftCols(N) * p.kink_interp;  // edge rows only
   std::vector<Eigen::Triplet<double>> t;
   for (Eigen::Index r = 0; r < p.sampling.S.outerSize(); ++r) {
     for (RowSpMat::InnerIterator it(p.sampling.S, r); it; ++it)
       if (it.col() < N) t.emplace_back(r, it.col(), it.value());
-    if (r >= first)
+    if (r >= first && p.kink)
       for (RowSpMat::InnerIterator it(SP, r - first); it; ++it) t.emplace_back(r, N + it.col(), -it.value());
+    if (r < first || p.ends.empty()) continue;
+    const std::vector<RowPoint> at = edge_row_points(p.grid, p.scene.edge, p.sampling, static_cast<int>(r - first));
+    for (size_t f = 0; f < p.ends.size(); ++f) {
+      double v = 0;
+      for (const RowPoint& q : at) v += q.weight * end_function(p.ends[f], p.end_fields[f], p.grid, q.x, q.y).w;
+      if (v != 0) t.emplace_back(r, base + static_cast<int>(f), v);
+    }
   }
   RowSpMat S(p.sampling.S.rows(), p.unknowns());
   S.setFromTriplets(t.begin(), t.end());
@@ -179,6 +189,72 @@ void attach_kink(Problem& p, const KinkEnrichment& e) {
   if (p.M.size()) p.M = sampling_mass(p);
 }
 
+namespace {
+// The Laplacian of each psi_j of (D31) at (x, y) in cell (ex, ey): for the cross block of the ends'
+// functions with them. The interpolant's part is read off P's rows for the cell's unknowns.
+OtherLaplacians kink_laplacians(const Problem& p) {
+  if (!p.kink) return {};
+  const Eigen::MatrixXd P(p.kink_interp);
+  return [&p, P](int ex, int ey, double x, double y, Eigen::VectorXd& out) {
+    out.setZero();
+    if (!kink_near(*p.kink, x, y)) return;
+    const Grid& g = p.grid;
+    const auto dofs = g.element_dofs(ex, ey);
+    const LocalBasis b = bfs_basis((x - ex * g.h) / g.h, (y - ey * g.h) / g.h, g.h);
+    VectorXd unit = VectorXd::Zero(P.cols());
+    for (Eigen::Index j = 0; j < P.cols(); ++j) {
+      KinkValue I;
+      for (int i = 0; i < 16; ++i)
+        if (dofs[i] >= 0) {
+          const double c = P(dofs[i], j);
+          I.w += c * b.v[i], I.wx += c * b.dx[i], I.wy += c * b.dy[i], I.wxx += c * b.dxx[i], I.wxy += c * b.dxy[i], I.wyy += c * b.dyy[i];
+        }
+      unit[j] = 1;
+      const KinkValue v = kink_field(*p.kink, unit, I, x, y);
+      unit[j] = 0;
+      out[j] = v.wxx + v.wyy;
+    }
+  };
+}
+}  // namespace
+
+void attach_ends(Problem& p, const std::vector<ContactEnd>& ends, const std::vector<EndField>& fields) {
+  if (!p.ends.empty()) throw std::logic_error("attach_ends: the problem has its ends' functions already");
+  if (ends.size() != fields.size()) throw std::logic_error("attach_ends: one field per end");
+  if (p.spec.kind != SamplingKind::Edge || !p.sampling.rim_laid_out())
+    throw std::invalid_argument("the ends' functions need edge rows laid out for the contact (--sampling edge)");
+  const Grid& g = p.grid;
+  for (const ContactEnd& e : ends) {
+    const double x = e.cx + e.a * std::cos(e.theta), y = e.cy + e.a * std::sin(e.theta);
+    double room = std::min({x, y, g.whole_lx() - x, g.whole_ly() - y});  // the clamped edges
+    if (g.mirror_x) room = std::min(room, std::abs(g.lx() - x));
+    if (g.mirror_y) room = std::min(room, std::abs(g.ly() - y));
+    if (room < e.outer) throw std::invalid_argument("the cut-off of a contact's end reaches a clamped edge or a mirror line");
+  }
+  const int N = g.unknowns(), Kk = p.kink_size(), base = N + Kk, k = static_cast<int>(ends.size());
+  const EndBlocks b = assemble_end_blocks(g, ends, fields, Kk, kink_laplacians(p), &p.scene.load);
+  std::vector<Eigen::Triplet<double>> t;
+  for (int f = 0; f < k; ++f) {
+    for (int i = 0; i < N; ++i)
+      if (b.border(i, f) != 0) t.emplace_back(i, base + f, b.border(i, f)), t.emplace_back(base + f, i, b.border(i, f));
+    for (int j = 0; j < Kk; ++j)
+      if (b.cross(j, f) != 0) t.emplace_back(N + j, base + f, b.cross(j, f)), t.emplace_back(base + f, N + j, b.cross(j, f));
+    for (int l = 0; l < k; ++l) t.emplace_back(base + f, base + l, b.own(f, l));
+  }
+  SpMat E(base + k, base + k);
+  E.setFromTriplets(t.begin(), t.end());
+  p.K.conservativeResize(base + k, base + k);
+  p.K += E;
+  if (p.enrichment_block.size() == 0) p.enrichment_block.resize(base, base);
+  p.enrichment_block.conservativeResize(base + k, base + k);
+  p.enrichment_block += E;
+  p.F.conservativeResize(base + k);
+  p.F.tail(k) = b.load;
+  p.ends = ends, p.end_fields = fields;
+  fit_columns(p);
+  if (p.M.size()) p.M = sampling_mass(p);
+}
+
 std::string overflow_risk(const Problem& p) {
   double phi = 0;
   for (double v : p.phi)
@@ -203,7 +279,7 @@ Problem make_problem(const Scene& s, const Grid& g, const SamplingSpec& spec) {
     KinkBlocks blocks = assemble_kink_blocks(g, *p.kink, p.kink_interp, s.load);
     p.K.conservativeResize(p.unknowns(), p.unknowns());
     p.K += blocks.border;
-    p.kink_block = std::move(blocks.border);
+    p.enrichment_block = std::move(blocks.border);
     p.F.conservativeResize(p.unknowns());
     p.F.tail(p.kink->size()) = blocks.load;
   }

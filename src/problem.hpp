@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "assemble.hpp"
+#include "contact_end.hpp"
 #include "kink_enrichment.hpp"
 #include "sampling.hpp"
 #include "scene.hpp"
@@ -37,9 +38,14 @@ struct Problem {
   // precision. None: the plain space.
   std::optional<KinkEnrichment> kink;
   SpMat kink_interp;
-  SpMat kink_block;
-  // Unknowns of the space: the grid's, then the enrichment's.
-  int unknowns() const { return grid.unknowns() + (kink ? kink->size() : 0); }
+  SpMat enrichment_block;  // every enrichment's part of K: (D31)'s, then the ends'
+  // The functions of the contacts' ends (contact_end.hpp), one per entry, after (D31)'s: none until
+  // attach_ends gives them.
+  std::vector<ContactEnd> ends;
+  std::vector<EndField> end_fields;
+  int kink_size() const { return kink ? kink->size() : 0; }
+  // Unknowns of the space: the grid's, then (D31)'s, then the ends'.
+  int unknowns() const { return grid.unknowns() + kink_size() + static_cast<int>(ends.size()); }
 };
 
 // The scene on the grid g (the whole rectangle, or a part of it: mirror.hpp), sampled as `spec`
@@ -70,6 +76,13 @@ EdgeRows rows_on(const Grid& g, const Scene& s, const SamplingSpec& spec);
 // Gives p the enrichment e (D31): its interpolant, and a column of S for each of its functions
 // (their values on the rim, -I_h F_k). K and F are left as they are.
 void attach_kink(Problem& p, const KinkEnrichment& e);
+
+// Gives p the functions chi (F - I_h F) of `fields` at `ends` (contact_end.hpp), after (D31)'s: K
+// bordered by their blocks (with (D31)'s functions too), F by their load, and a column of S each
+// (their values at the point rows, their averages on the spline rows). Edge sampling with rows laid
+// out for the contact only; throws std::invalid_argument where an end's cut-off reaches a clamped
+// edge or a mirror line (its images would be other functions), and std::logic_error if p has ends.
+void attach_ends(Problem& p, const std::vector<ContactEnd>& ends, const std::vector<EndField>& fields);
 
 // The rows on p's circle laid out anew for a contact (rim_rows.hpp, D28): the sampling and the
 // obstacle at its samples remade; K and F kept; M remade.

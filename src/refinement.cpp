@@ -32,9 +32,9 @@ VectorXd extended_residual(const Problem& p, const VectorXd& w, const VectorXd& 
       for (int k = 0; k < 16; ++k)
         if (dofs[k] >= 0) r[dofs[k]] -= f[k];
     }
-  // The enrichment's border and block (D31), whose entries are the problem's as assembled.
-  for (Eigen::Index col = 0; col < p.kink_block.outerSize(); ++col)
-    for (SpMat::InnerIterator it(p.kink_block, col); it; ++it)
+  // The enrichments' borders and blocks ((D31)'s and the ends'), whose entries are the problem's as assembled.
+  for (Eigen::Index col = 0; col < p.enrichment_block.outerSize(); ++col)
+    for (SpMat::InnerIterator it(p.enrichment_block, col); it; ++it)
       r[it.row()] -= static_cast<Extended>(it.value()) * static_cast<Extended>(w[col]);
   VectorXd out(r.size());
   for (size_t i = 0; i < r.size(); ++i) out[i] = static_cast<double>(r[i]);

@@ -10,7 +10,7 @@ namespace plate {
 
 SolutionRoundoff::SolutionRoundoff(const Problem& p, const VectorXd& w, const VectorXd& lambda) : p_(p) {
   // Its perturbations live on the grid's unknowns; an enriched solve is refined instead (D22).
-  if (p.kink) throw std::logic_error("SolutionRoundoff takes the plain space: the problem carries the kink (D31)");
+  if (p.kink || !p.ends.empty()) throw std::logic_error("SolutionRoundoff takes the plain space: the problem carries the kink (D31) or the ends' functions");
   const VectorXd force = p.sampling.S.transpose() * p.sampling.weights.cwiseProduct(lambda);
   VectorXd r = p.K * w - p.F - force;
   scale_ = p.F.cwiseAbs() + force.cwiseAbs();

@@ -170,7 +170,27 @@ EdgePoints spline_rows(const Grid& g, const EdgeCurve& c, const EdgeRows& how, s
 }
 // @end edge-splines
 
+}  // namespace
+
 // @region rim-layout-rows
+std::vector<RowPoint> spline_row_points(const Grid& g, const EdgeCurve& c, const SplineArc& arc, int degree, int j) {
+  const Quadrature1D q = gauss_legendre(4);
+  const double delta = clamped_bspline_integral(arc, degree, j);
+  std::vector<RowPoint> out;
+  for (int span = j; span <= j + degree; ++span) {
+    const double lo = arc.knot(span, degree), hi = arc.knot(span + 1, degree);
+    // About a cell each; the same count for a span and its mirror image, which may differ by rounding.
+    const int pieces = std::max(1, static_cast<int>(std::ceil(c.r * (hi - lo) / g.h - 1e-9)));
+    for (int k = 0; hi > lo && k < pieces; ++k)
+      for (size_t i = 0; i < q.points.size(); ++i) {
+        const double t = lo + (hi - lo) * (k + q.points[i]) / pieces;
+        out.push_back({c.cx + c.r * std::cos(t), c.cy + c.r * std::sin(t), clamped_bspline(arc, degree, j, t) * (hi - lo) * q.weights[i] / pieces / delta});
+      }
+  }
+  return out;
+}
+
+namespace {
 // Eq. (D28): the rows of a layout made for the contact. On each spline arc the constraint averaged
 // against its clamped B-splines B_j, (S w)_j = (1 / Delta_j) int B_j(theta) w_h(x(theta)) dtheta with
 // Delta_j = int B_j, weight r Delta_j, placed at the basis' Greville angle; elsewhere a row at each
@@ -178,7 +198,6 @@ EdgePoints spline_rows(const Grid& g, const EdgeCurve& c, const EdgeRows& how, s
 EdgePoints laid_out_rows(const Grid& g, const EdgeCurve& c, const EdgeRows& how, const RimLayout& L,
                          std::vector<std::map<int, double>>& rows, std::vector<RimRow>& kinds) {
   const int degree = how.degree;
-  const Quadrature1D q = gauss_legendre(4);
   EdgePoints e;
   e.length = 2 * M_PI * c.r;
   auto place = [&](double t, double weight) {
@@ -194,17 +213,7 @@ EdgePoints laid_out_rows(const Grid& g, const EdgeCurve& c, const EdgeRows& how,
       place(arc.greville(j, degree), c.r * delta);
       kinds.push_back({static_cast<int>(a), j});
       rows.emplace_back();
-      for (int span = j; span <= j + degree; ++span) {
-        const double lo = arc.knot(span, degree), hi = arc.knot(span + 1, degree);
-        // About a cell each; the same count for a span and its mirror image, which may differ by rounding.
-        const int pieces = std::max(1, static_cast<int>(std::ceil(c.r * (hi - lo) / g.h - 1e-9)));
-        for (int k = 0; hi > lo && k < pieces; ++k)
-          for (size_t i = 0; i < q.points.size(); ++i) {
-            const double t = lo + (hi - lo) * (k + q.points[i]) / pieces;
-            add_point_row(g, c.cx + c.r * std::cos(t), c.cy + c.r * std::sin(t),
-                          clamped_bspline(arc, degree, j, t) * (hi - lo) * q.weights[i] / pieces / delta, rows.back());
-          }
-      }
+      for (const RowPoint& p : spline_row_points(g, c, arc, degree, j)) add_point_row(g, p.x, p.y, p.weight, rows.back());
     }
   }
   const std::vector<double> weights = point_weights(L, c.r);
@@ -389,6 +398,14 @@ SpMat weighted_gram(const RowSpMat& S, const VectorXd& d, int unknowns) {
   SpMat G(unknowns, unknowns);
   G.setFromTriplets(t.begin(), t.end());
   return G;
+}
+
+std::vector<RowPoint> edge_row_points(const Grid& g, const EdgeCurve& c, const Sampling& s, int k) {
+  if (s.edge_spline_degree == 0 || (s.rim_laid_out() && s.rim_rows[k].point()))
+    return {{s.x[s.edge_begin + k], s.y[s.edge_begin + k], 1.0}};
+  if (!s.rim_laid_out()) throw std::logic_error("edge_row_points: periodic spline rows are not read point by point here");
+  const RimRow& row = s.rim_rows[k];
+  return spline_row_points(g, c, s.rim.arcs[row.arc], s.edge_spline_degree, row.basis);
 }
 
 }  // namespace plate

@@ -82,6 +82,17 @@ const char* to_string(SamplingKind kind);
 SamplingKind sampling_kind(const std::string& name);
 inline bool has_edge(SamplingKind k) { return k == SamplingKind::Edge || k == SamplingKind::EdgeGauss; }
 
+// Where an edge row reads the plate: points and weights with (S w)_k = sum weight w_h(x, y).
+struct RowPoint {
+  double x, y, weight;
+};
+// Spline row j of `arc` on the circle c: its quadrature (D28), pieces of about a cell with four
+// Gauss points each, the weights summing to one.
+std::vector<RowPoint> spline_row_points(const Grid& g, const EdgeCurve& c, const SplineArc& arc, int degree, int j);
+// Edge row k of s (0 for its first): its point, weight 1, or its spline's quadrature (rows laid out
+// for a contact; a periodic spline row is refused with std::logic_error).
+std::vector<RowPoint> edge_row_points(const Grid& g, const EdgeCurve& c, const Sampling& s, int k);
+
 // S^T diag(d) S, visiting only the points with d_p != 0 (the active ones, in the schemes).
 SpMat weighted_gram(const RowSpMat& S, const VectorXd& d, int unknowns);
 

@@ -168,7 +168,7 @@ void validate(const SolveOptions& o) {
 SolveResult solve(const Problem& p, const SolveOptions& o) {
   validate(o);
   // The penalty schemes, their bounds and rates are written for the grid's space alone.
-  if (p.kink) throw std::logic_error("the penalty schemes take the plain space: the problem carries the kink (D31)");
+  if (p.kink || !p.ends.empty()) throw std::logic_error("the penalty schemes take the plain space: the problem carries the kink (D31) or the ends' functions");
   SolveResult res;
   res.w = VectorXd::Zero(p.grid.unknowns());  // starting guess w^{eps,0} = 0
   const auto t_start = Clock::now();

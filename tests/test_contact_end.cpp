@@ -10,7 +10,13 @@
 #include <Eigen/Eigenvalues>
 
 #include "bfs_element.hpp"
+#include "contact.hpp"
 #include "contact_end.hpp"
+#include "dual_active_set.hpp"
+#include "edge.hpp"
+#include "mirror.hpp"
+#include "problem.hpp"
+#include "rim_rows.hpp"
 
 using namespace plate;
 
@@ -243,4 +249,63 @@ TEST(ContactEnd, TheFitFindsAnEndPutOffByHand) {
   std::vector<double> s, below;  // a plate that dips below the rim beyond the end
   for (double si : {0.01, 0.02, 0.03, 0.04}) s.push_back(si), below.push_back(-std::pow(si, 2.5));
   EXPECT_THROW(end_shift(s, below), std::invalid_argument);
+}
+
+namespace {
+// The 2 x 1 lift-off scene's quarter on n cells along x, its rows laid out for contact on
+// [theta_e, pi - theta_e] and its images, with points a cell apart off the arcs.
+Problem quarter_laid_out(int n, double theta_e) {
+  const Scene scene = Scene::rectangle(2, 1).over(Cylinder{1, 0.5, 0.25, 0.0625});
+  const SamplingSpec spec{SamplingKind::Edge, EdgeRows{}};
+  const Grid whole = scene.grid(n);
+  Problem p = make_problem(scene, part_of(whole, find_mirrors(scene, whole, spec)), spec);
+  const double cell = p.grid.h / 0.25;
+  ContactArcs contact;
+  contact.arcs = {{theta_e, M_PI - theta_e}, {M_PI + theta_e, 2 * M_PI - theta_e}};
+  lay_out_rim(p, layout_for(contact, 0, 2 * cell, 4 * cell, edge_points(p.scene.edge, p.grid.h).theta, 1e-14));
+  return p;
+}
+}  // namespace
+
+// The ends' functions as part of a problem (attach_ends): the space only grows and the rows are the
+// same, so the constrained minimum of the energy cannot rise, and it falls since the end's field is
+// new to the grid; the answer is certified, refinement (D22) included; each column of S is the
+// function read at the row, and the field read at a point is the grid's plus the ends' share.
+TEST(ContactEnd, TheEndsFunctionsLowerTheEnergyOfTheSameRows) {
+  const double theta_e = 0.98;
+  Problem plain = quarter_laid_out(64, theta_e);
+  const ExactResult r0 = solve_exact_rows(plain, ExactOptions{}, NodeSet{}, RowExchange{}, nullptr);
+  Problem p = quarter_laid_out(64, theta_e);
+  const Grid& g = p.grid;
+  const ContactEnd e{g.lx(), g.ly(), 0.25, M_PI + theta_e, -1, 0.05, 0.1};
+  attach_ends(p, {e, e}, {EndField::Gap32, EndField::Gap52});
+  ASSERT_EQ(p.unknowns(), plain.unknowns() + 2);
+  const ExactResult r1 = solve_exact_rows(p, ExactOptions{}, NodeSet{}, RowExchange{}, nullptr);
+  ASSERT_TRUE(r0.converged && r1.converged);
+  const double e0 = energy(plain, r0.w), e1 = energy(p, r1.w);
+  EXPECT_LT(e1, e0 - 1e-9 * std::abs(e0));
+  EXPECT_GT(e1, e0 - 1e-3 * std::abs(e0));
+  EXPECT_NE(r1.w[p.unknowns() - 1], 0.0);
+  int points = 0;
+  for (int k = 0; k < p.sampling.edge_size(); ++k) {
+    if (!p.sampling.rim_rows[k].point()) continue;
+    const int row = p.sampling.edge_begin + k;
+    for (int f = 0; f < 2; ++f) {
+      const double want = end_function(e, f ? EndField::Gap52 : EndField::Gap32, g, p.sampling.x[row], p.sampling.y[row]).w;
+      EXPECT_DOUBLE_EQ(p.sampling.S.coeff(row, p.unknowns() - 2 + f), want);
+      points += want != 0;
+    }
+  }
+  EXPECT_GT(points, 2);
+  const double x = e.cx + 0.27 * std::cos(e.theta - 0.05), y = e.cy + 0.27 * std::sin(e.theta - 0.05);
+  const VectorXd grid_only = r1.w.head(g.unknowns());
+  const double ends = r1.w[p.unknowns() - 2] * end_function(e, EndField::Gap32, g, x, y).w +
+                      r1.w[p.unknowns() - 1] * end_function(e, EndField::Gap52, g, x, y).w;
+  EXPECT_NEAR(PlateField(p, r1.w).at(x, y).w, evaluate(g, grid_only, x, y).w + ends, 1e-15);
+  EXPECT_NE(ends, 0.0);
+  EXPECT_THROW(attach_ends(p, {e}, {EndField::Gap52}), std::logic_error);
+  Problem near_line = quarter_laid_out(64, theta_e);
+  ContactEnd too_close = e;
+  too_close.outer = 0.25;  // reaches the mirror line y = 0.5
+  EXPECT_THROW(attach_ends(near_line, {too_close}, {EndField::Gap52}), std::invalid_argument);
 }

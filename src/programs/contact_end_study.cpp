@@ -4,9 +4,8 @@
 // mirror lines leave (which holds one end, at pi + theta_e): rows averaged against graded clamped
 // splines on the contact arcs [theta_e, pi - theta_e] and its images, points a cell apart off them
 // and `--dense` per cell for four cells beyond each end; the space widened by chi (F - I_h F) of
-// F_32 and F_52 at the end, and with --kink by (D31)'s functions too (their cross block with the
-// end's: assemble_end_blocks' `others`); solved exactly (no refinement: its residual does not know
-// the new functions); the end moved by the fit (at most half a cell a step) until it moves less
+// F_32 and F_52 at the end (attach_ends), and with --kink by (D31)'s functions too; solved exactly,
+// with --refine refined (D22); the end moved by the fit (at most half a cell a step) until it moves less
 // than 1e-9, and with --consistent then pushed on, by bisection, to where no point beyond it bears
 // load. Prints, per grid, the end, max w (at the centre), the two coefficients, the moves and the
 // point rows beyond the end that push.
@@ -43,6 +42,7 @@ struct Answer {
 };
 
 bool with_kink = false;  // the space widened by (D31) too
+bool refined = false;    // the refinement (D22)
 
 // The rows for contact on [theta_e, pi - theta_e] and its images: graded splines there, points a
 // cell apart elsewhere and `dense` per cell for four cells beyond each end (from `skip` cells on).
@@ -69,99 +69,9 @@ void lay_out(Problem& p, double theta_e, double dense, double skip) {
   lay_out_rim(p, L);
 }
 
-// The space widened by chi (F - I_h F) of each field at `end`: K bordered by their blocks, S given
-// their values at point rows and nodes and their averages against a spline row's basis (the
-// quadrature of (D28)'s rows, 8 Gauss points on pieces about a cell).
-void widen(Problem& p, const ContactEnd& end, const std::vector<EndField>& fields) {
-  const Grid& g = p.grid;
-  const double h = g.h, a = kRadius, cx = g.lx(), cy = g.ly();
-  const int N = g.unknowns(), k = static_cast<int>(fields.size());
-  const int Kk = p.kink ? p.kink->size() : 0, base = N + Kk;  // (D31)'s functions come first
-  const std::vector<ContactEnd> ends(k, end);
-  const Eigen::MatrixXd P = p.kink ? Eigen::MatrixXd(p.kink_interp) : Eigen::MatrixXd();
-  // The Laplacian of each psi_j of (D31) at (x, y): its interpolant's part read off P on the cell.
-  const OtherLaplacians kink_laplacians = [&](int ex, int ey, double x, double y, Eigen::VectorXd& out) {
-    out.setZero();
-    if (!kink_near(*p.kink, x, y)) return;
-    const auto dofs = g.element_dofs(ex, ey);
-    const LocalBasis b = bfs_basis((x - ex * h) / h, (y - ey * h) / h, h);
-    VectorXd unit = VectorXd::Zero(Kk);
-    for (int j = 0; j < Kk; ++j) {
-      KinkValue I;
-      for (int i = 0; i < 16; ++i)
-        if (dofs[i] >= 0) {
-          const double c = P(dofs[i], j);
-          I.w += c * b.v[i], I.wx += c * b.dx[i], I.wy += c * b.dy[i], I.wxx += c * b.dxx[i], I.wxy += c * b.dxy[i], I.wyy += c * b.dyy[i];
-        }
-      unit[j] = 1;
-      const KinkValue v = kink_field(*p.kink, unit, I, x, y);
-      unit[j] = 0;
-      out[j] = v.wxx + v.wyy;
-    }
-  };
-  const EndBlocks blocks = assemble_end_blocks(g, ends, fields, Kk, kink_laplacians);
-  std::vector<Eigen::Triplet<double>> t;
-  for (int c = 0; c < p.K.outerSize(); ++c)
-    for (SpMat::InnerIterator it(p.K, c); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
-  for (int i = 0; i < N; ++i)
-    for (int f = 0; f < k; ++f)
-      if (blocks.border(i, f) != 0) t.emplace_back(i, base + f, blocks.border(i, f)), t.emplace_back(base + f, i, blocks.border(i, f));
-  for (int j = 0; j < Kk; ++j)
-    for (int f = 0; f < k; ++f)
-      if (blocks.cross(j, f) != 0) t.emplace_back(N + j, base + f, blocks.cross(j, f)), t.emplace_back(base + f, N + j, blocks.cross(j, f));
-  for (int f = 0; f < k; ++f)
-    for (int l = 0; l < k; ++l) t.emplace_back(base + f, base + l, blocks.own(f, l));
-  SpMat K(base + k, base + k);
-  K.setFromTriplets(t.begin(), t.end());
-  p.K = std::move(K);
-  p.F.conservativeResize(base + k);
-  p.F.tail(k).setZero();  // the scene carries no load, so (f, psi_k) = 0
-  const Sampling& s = p.sampling;
-  std::vector<Eigen::Triplet<double>> ts;
-  for (int r = 0; r < s.S.outerSize(); ++r)
-    for (RowSpMat::InnerIterator it(s.S, r); it; ++it) ts.emplace_back(r, it.col(), it.value());
-  const Quadrature1D q = gauss_legendre(8);
-  for (int r = 0; r < s.size(); ++r) {
-    std::vector<double> v(k, 0.0);
-    const int e = r - s.edge_begin;
-    if (e < 0 || s.rim_rows[e].point()) {
-      for (int f = 0; f < k; ++f) v[f] = end_function(end, fields[f], g, s.x[r], s.y[r]).w;
-    } else {
-      const SplineArc& arc = s.rim.arcs[s.rim_rows[e].arc];
-      const int j = s.rim_rows[e].basis, degree = 3;
-      const double delta = clamped_bspline_integral(arc, degree, j);
-      for (int span = j; span <= j + degree; ++span) {
-        const double lo = arc.knot(span, degree), hi = arc.knot(span + 1, degree);
-        const int pieces = std::max(1, static_cast<int>(std::ceil(a * (hi - lo) / h - 1e-9)));
-        for (int piece = 0; hi > lo && piece < pieces; ++piece)
-          for (size_t i = 0; i < q.points.size(); ++i) {
-            const double th = lo + (hi - lo) * (piece + q.points[i]) / pieces;
-            const double weight = clamped_bspline(arc, degree, j, th) * (hi - lo) * q.weights[i] / pieces / delta;
-            for (int f = 0; f < k; ++f) v[f] += weight * end_function(end, fields[f], g, cx + a * std::cos(th), cy + a * std::sin(th)).w;
-          }
-      }
-    }
-    for (int f = 0; f < k; ++f)
-      if (v[f] != 0) ts.emplace_back(r, base + f, v[f]);
-  }
-  RowSpMat S(s.size(), base + k);
-  S.setFromTriplets(ts.begin(), ts.end());
-  p.sampling.S = std::move(S);
-  // The solver reads the count of extra unknowns from p.kink: (D31)'s count is raised by the end's
-  // functions for the solve (solve_once puts it back), or a stand-in holds only the count. Rows
-  // appended later would meet a short interpolant, so the study appends none.
-  if (p.kink) {
-    p.kink->functions += k;
-  } else {
-    KinkEnrichment size_only;
-    size_only.functions = k;
-    p.kink = size_only;
-  }
-}
-
 // One solve with the end at theta_e; `fields` empty: the plain space. `shift` gets the fit's move of
-// the end (an angle, at most half a cell). Solved without the refinement (D22), whose residual does
-// not know the end's functions.
+// the end (an angle, at most half a cell). The end's cut-off is checked here against the quarter's
+// mirror lines too, for the message; attach_ends checks it again.
 Answer solve_once(const Scene& scene, int n, double theta_e, const std::vector<EndField>& fields, double dense, double skip, double& shift) {
   SamplingSpec spec{SamplingKind::Edge, EdgeRows{}};
   if (with_kink) spec.enrich.kind = EnrichSpec::Kind::Ring;
@@ -175,25 +85,17 @@ Answer solve_once(const Scene& scene, int n, double theta_e, const std::vector<E
   if (std::min({cx - ex, cy - ey, ex, ey}) < end.outer)  // the mirror lines, and the clamped edges
     throw std::invalid_argument("--start: the end's cut-off would cross a mirror line or a clamped edge");
   lay_out(p, theta_e, dense, skip);
-  if (k) widen(p, end, fields);
+  if (k) attach_ends(p, std::vector<ContactEnd>(k, end), fields);
   ExactOptions o;
-  o.refine = false;
+  o.refine = refined;
   const ExactResult r = solve_exact_rows(p, o, NodeSet{}, RowExchange{}, nullptr);
-  if (with_kink) p.kink->functions -= k;
-  else p.kink.reset();
-  const int base = p.unknowns();
-  const VectorXd plate_w = r.w.head(base);
-  const PlateField field(p, plate_w);
-  auto w_at = [&](double x, double y) {
-    double w = field.at(x, y).w;
-    for (int f = 0; f < k; ++f) w += r.w[base + f] * end_function(end, fields[f], g, x, y).w;
-    return w;
-  };
+  const PlateField field(p, r.w);
+  auto w_at = [&](double x, double y) { return field.at(x, y).w; };
   Answer out;
   out.converged = r.converged;
   out.max_w = w_at(cx, cy);
   out.theta_e = theta_e;
-  for (int f = 0; f < k; ++f) out.coefficients.push_back(r.w[base + f]);
+  for (int f = 0; f < k; ++f) out.coefficients.push_back(r.w[p.unknowns() - k + f]);
   for (int e = 0; e < p.sampling.edge_size(); ++e) {
     const double beyond = end.theta - p.sampling.edge.theta[e];  // the quarter's end is free for smaller angles
     if (p.sampling.rim_rows[e].point() && beyond > 0 && beyond < 4 * h / a && r.lambda[p.sampling.edge_begin + e] > 0) {
@@ -226,6 +128,7 @@ int main(int argc, char** argv) {
   app.add_option("--skip", skip, "no dense point rows within this many cells beyond each end")->check(CLI::Range(0.0, 4.0));
   app.add_flag("--consistent", consistent, "then extend the contact by bisection until no point beyond an end pushes");
   app.add_flag("--kink", with_kink, "the kink of the line load carried too (D31)");
+  app.add_flag("--refine", refined, "refine each solve (D22)");
   app.add_flag("--plain", plain, "the plain space (the end still located by the fit)");
   CLI11_PARSE(app, argc, argv);
   const Scene scene = Scene::rectangle(lx, 1).over(Cylinder{lx / 2, 0.5, kRadius, kHeight});
