@@ -94,23 +94,35 @@ EndValue end_function_in_cell(const ContactEnd& e, EndField which, const EndDeri
 }
 }  // namespace
 
-EndValue end_function(const ContactEnd& e, EndField which, const Grid& g, double x, double y) {
-  const EndDerivatives X = end_cutoff(e, x, y);
-  if (X.w == 0) return {};
+namespace {
+// The cell of (x, y) and the basis there; throws std::invalid_argument off the grid.
+struct CellAt {
+  int ex, ey;
+  LocalBasis b;
+};
+CellAt cell_at(const Grid& g, double x, double y) {
   int ex, ey;
   double t, u;
   if (!g.locate(x, y, ex, ey, t, u)) throw std::invalid_argument("end_function: the point is outside the grid");
-  return end_function_in_cell(e, which, X, interpolant_unknowns(e, which, g, ex, ey), bfs_basis(t, u, g.h), x, y);
+  return {ex, ey, bfs_basis(t, u, g.h)};
+}
+}  // namespace
+
+// Its value and Laplacian as the blocks form them (end_function_in_cell), which the test of the
+// derivatives holds against the product rule below.
+EndValue end_function(const ContactEnd& e, EndField which, const Grid& g, double x, double y) {
+  const EndDerivatives X = end_cutoff(e, x, y);
+  if (X.w == 0) return {};
+  const CellAt c = cell_at(g, x, y);
+  return end_function_in_cell(e, which, X, interpolant_unknowns(e, which, g, c.ex, c.ey), c.b, x, y);
 }
 
 EndDerivatives end_function_derivatives(const ContactEnd& e, EndField which, const Grid& g, double x, double y) {
   const EndDerivatives X = end_cutoff(e, x, y);
   if (X.w == 0) return {};
-  int ex, ey;
-  double t, u;
-  if (!g.locate(x, y, ex, ey, t, u)) throw std::invalid_argument("end_function_derivatives: the point is outside the grid");
-  const std::array<double, 16> c = interpolant_unknowns(e, which, g, ex, ey);
-  const LocalBasis b = bfs_basis(t, u, g.h);
+  const CellAt cell = cell_at(g, x, y);
+  const std::array<double, 16> c = interpolant_unknowns(e, which, g, cell.ex, cell.ey);
+  const LocalBasis& b = cell.b;
   EndDerivatives D = end_field(e, which, x, y);  // then D = F - I_h F
   for (int j = 0; j < 16; ++j) {
     D.w -= c[j] * b.v[j], D.wx -= c[j] * b.dx[j], D.wy -= c[j] * b.dy[j];
@@ -124,6 +136,7 @@ EndDerivatives end_function_derivatives(const ContactEnd& e, EndField which, con
           X.w * D.wxy + X.wx * D.wy + X.wy * D.wx + X.wxy * D.w,
           X.w * D.wyy + 2 * X.wy * D.wy + X.wyy * D.w};
 }
+
 
 double end_shift(const std::vector<double>& s, const std::vector<double>& gap) {
   if (s.size() != gap.size() || s.size() < 3) throw std::invalid_argument("end_shift: three or more samples, one gap each");
