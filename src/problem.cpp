@@ -2,6 +2,7 @@
 #include "problem.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -145,7 +146,7 @@ Problem make_samples(const Scene& s, const Grid& g, const SamplingSpec& spec) {
   check_obstacle_on_boundary(g, s.obstacle);
   check_obstacle_at_nodes(g, s.obstacle);
   // Without an edge curve the edge kinds keep their interior samples alone.
-  Problem p{g, make_sampling(g, spec.kind, s.edge, rows_on(g, s, spec)), {}, {}, {}, {}, spec, s, {}, {}, {}};
+  Problem p{g, make_sampling(g, spec.kind, s.edge, rows_on(g, s, spec)), {}, {}, {}, {}, spec, s, {}, {}, {}, {}, {}};
   sample_obstacle(p, s.obstacle, 0);
   return p;
 }
@@ -191,18 +192,36 @@ void attach_kink(Problem& p, const KinkEnrichment& e) {
 
 namespace {
 // The Laplacian of each psi_j of (D31) at (x, y) in cell (ex, ey): for the cross block of the ends'
-// functions with them. The interpolant's part is read off P's rows for the cell's unknowns.
+// functions with them. The interpolant's part is read off P's rows for the cell's unknowns. Only the
+// functions met in the cell are formed: those P gives a node of it, and those whose splines reach
+// the angle of a corner (a cell spans less than a knot spacing, so a spline that reaches into it
+// reaches one of its extreme angles), found once a cell.
 OtherLaplacians kink_laplacians(const Problem& p) {
   if (!p.kink) return {};
   const Eigen::MatrixXd P(p.kink_interp);
-  return [&p, P](int ex, int ey, double x, double y, Eigen::VectorXd& out) {
+  std::array<int, 2> cell{-1, -1};
+  std::vector<Eigen::Index> met;
+  return [&p, P, cell, met](int ex, int ey, double x, double y, Eigen::VectorXd& out) mutable {
     out.setZero();
     if (!kink_near(*p.kink, x, y)) return;
     const Grid& g = p.grid;
+    const KinkEnrichment& e = *p.kink;
     const auto dofs = g.element_dofs(ex, ey);
+    if (cell != std::array<int, 2>{ex, ey}) {
+      cell = {ex, ey}, met.clear();
+      for (Eigen::Index j = 0; j < P.cols(); ++j) {
+        bool in = false;
+        for (int i = 0; i < 16 && !in; ++i) in = dofs[i] >= 0 && P(dofs[i], j) != 0;
+        for (int c = 0; c < 4 && !in; ++c) {
+          const double t = std::atan2((ey + c / 2) * g.h - e.cy, (ex + c % 2) * g.h - e.cx), r = e.a + 0.5 * g.h;
+          in = kink_profile(e, static_cast<int>(j), e.cx + r * std::cos(t), e.cy + r * std::sin(t)).w != 0;
+        }
+        if (in) met.push_back(j);
+      }
+    }
     const LocalBasis b = bfs_basis((x - ex * g.h) / g.h, (y - ey * g.h) / g.h, g.h);
     VectorXd unit = VectorXd::Zero(P.cols());
-    for (Eigen::Index j = 0; j < P.cols(); ++j) {
+    for (Eigen::Index j : met) {
       KinkValue I;
       for (int i = 0; i < 16; ++i)
         if (dofs[i] >= 0) {
@@ -210,7 +229,7 @@ OtherLaplacians kink_laplacians(const Problem& p) {
           I.w += c * b.v[i], I.wx += c * b.dx[i], I.wy += c * b.dy[i], I.wxx += c * b.dxx[i], I.wxy += c * b.dxy[i], I.wyy += c * b.dyy[i];
         }
       unit[j] = 1;
-      const KinkValue v = kink_field(*p.kink, unit, I, x, y);
+      const KinkValue v = kink_field(e, unit, I, x, y);
       unit[j] = 0;
       out[j] = v.wxx + v.wyy;
     }

@@ -1,6 +1,7 @@
 // The default rows on scenes where the plate lifts off part of the rim (D28), h = 1/64 and 1/128:
 // the plate kept out of the obstacle, the line load nonnegative, and max w beside rows at points.
-// (Fine grids: `make test` runs it, `make test-fast` does not.)
+// The located-ends solve on the 2 x 1 scene. (Fine grids: `make test` runs them, `make test-fast`
+// does not.)
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +11,9 @@
 #include "contact.hpp"
 #include "extrema.hpp"
 #include "line_force.hpp"
+#include "located_ends.hpp"
+#include "norms.hpp"
+#include "rim_exchange.hpp"
 
 using namespace plate;
 
@@ -60,4 +64,28 @@ TEST(RimRows, LiftOffScenesKeepThePlateOutOfTheObstacle) {
     const SceneSolution points = lift_off(s, 2 * s.n, EdgeRows::points());
     EXPECT_NEAR(max_w, extremum_of_w(points.whole(), points.result.w, +1).value, 2e-5 * max_w) << s.lx << " " << s.cx;
   }
+}
+
+// The located-ends solve (located_ends.hpp) on the 2 x 1 scene, whole plate, h = 1/32, from the
+// contact of the default solve: the ends settle and the answer is certified; nothing in the solve
+// knows the scene's mirror lines, yet the four ends it finds are each other's mirror images; and
+// max w lies beside the default's.
+TEST(LocatedEnds, TheEndsOfASymmetricContactSettleSymmetrically) {
+  const Scene scene = Scene::rectangle(2, 1).over(Cylinder{1, 0.5, 0.25, 0.0625});
+  const int n = 64;
+  const SceneSolution d = solve_exact_scene(scene, n, SamplingSpec{SamplingKind::Edge, EdgeRows{}}, ExactOptions{}, false);
+  const double touch = std::max(1e-10 * max_nodal_abs(d.result.w.head(d.solved.grid.unknowns())), dip_below_edge(d.solved, d.result.w));
+  const ContactArcs start = rim_contact(d.solved, d.result.w, d.result.lambda, touch);
+  ASSERT_EQ(start.arcs.size(), 2u);
+  const EndsSolve r = solve_located_ends(scene, n, start, ExactOptions{}, EndsOptions{});
+  ASSERT_TRUE(r.result.converged);
+  EXPECT_TRUE(r.settled) << r.moves << " moves";
+  ASSERT_EQ(r.problem.ends.size(), 8u);  // two functions at each of four ends
+  const double t = r.problem.ends[0].theta;
+  EXPECT_NEAR(r.problem.ends[2].theta, M_PI - t, 1e-7);
+  EXPECT_NEAR(r.problem.ends[4].theta, M_PI + t, 1e-7);
+  EXPECT_NEAR(r.problem.ends[6].theta, 2 * M_PI - t, 1e-7);
+  EXPECT_GT(std::abs(t - start.arcs[0].first), 1e-3);  // the ends did move from the start
+  const double max_w = extremum_of_w(r.problem, r.result.w, +1).value;
+  EXPECT_NEAR(max_w, extremum_of_w(d.solved, d.result.w, +1).value, 1e-4 * max_w);
 }

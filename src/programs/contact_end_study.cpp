@@ -23,7 +23,11 @@
 #include "contact_end.hpp"
 #include "dual_active_set.hpp"
 #include "edge.hpp"
+#include "extrema.hpp"
 #include "gauss.hpp"
+#include "located_ends.hpp"
+#include "norms.hpp"
+#include "rim_exchange.hpp"
 #include "mirror.hpp"
 #include "rim_rows.hpp"
 
@@ -112,6 +116,34 @@ Answer solve_once(const Scene& scene, int n, double theta_e, const std::vector<E
   return out;
 }
 
+// --whole: any cylinder's scene on the whole plate (located_ends.hpp), every end carried and moved,
+// from the contact of the default solve on the same grid. Prints, per grid, max w (the extremum of
+// the field) and the force, the ends' angles, the moves, and the pushing rows beyond each end.
+int run_whole(const Scene& scene, int from, int to, int step, const EndsOptions& opt) {
+  std::printf("%6s %16s %14s %6s  %s\n", "n", "max w", "force", "moves", "ends (theta, pushing, at)");
+  for (int n = from; n <= to; n = step ? n + step : 2 * n) {
+    try {
+      const SceneSolution d = solve_exact_scene(scene, n, SamplingSpec{SamplingKind::Edge, EdgeRows{}}, ExactOptions{}, false);
+      const double touch = std::max(1e-10 * max_nodal_abs(d.result.w.head(d.solved.grid.unknowns())), dip_below_edge(d.solved, d.result.w));
+      const EndsSolve r = solve_located_ends(scene, n, rim_contact(d.solved, d.result.w, d.result.lambda, touch), ExactOptions{}, opt);
+      if (!r.result.converged || !r.settled) {
+        std::fprintf(stderr, "contact_end_study: n = %d: %s\n", n, r.result.converged ? "the ends did not settle" : "a solve did not converge");
+        return 3;
+      }
+      const Extremum m = extremum_of_w(r.problem, r.result.w, 1);
+      std::printf("%6d %16.12f %14.9f %6d ", n, m.value, total_contact_force(r.problem, r.result.lambda), r.moves);
+      for (size_t k = 0; k < r.pushing.size(); ++k)
+        std::printf(" (%.9f, %d, %.3f)", r.problem.ends[2 * k].theta, r.pushing[k], r.nearest_push[k]);
+      std::printf("\n");
+      std::fflush(stdout);
+    } catch (const std::invalid_argument& e) {
+      std::fprintf(stderr, "contact_end_study: n = %d: %s\n", n, e.what());
+      return 2;
+    }
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -130,7 +162,18 @@ int main(int argc, char** argv) {
   app.add_flag("--kink", with_kink, "the kink of the line load carried too (D31)");
   app.add_flag("--refine", refined, "refine each solve (D22)");
   app.add_flag("--plain", plain, "the plain space (the end still located by the fit)");
+  bool whole = false;
+  std::vector<double> centre;
+  app.add_flag("--whole", whole, "the whole plate, every end carried (located_ends.hpp), from the default solve's contact");
+  app.add_option("--centre", centre, "with --whole: the cylinder's centre (default the plate's)")->expected(2)->delimiter(',');
   CLI11_PARSE(app, argc, argv);
+  if (whole) {
+    const double cx = centre.empty() ? lx / 2 : centre[0], cy = centre.empty() ? 0.5 : centre[1];
+    EndsOptions opt;
+    opt.dense = dense;
+    if (with_kink) opt.enrich.kind = EnrichSpec::Kind::Ring;
+    return run_whole(Scene::rectangle(lx, 1).over(Cylinder{cx, cy, kRadius, kHeight}), from, to, step, opt);
+  }
   const Scene scene = Scene::rectangle(lx, 1).over(Cylinder{lx / 2, 0.5, kRadius, kHeight});
   const std::vector<EndField> fields = plain ? std::vector<EndField>{} : std::vector<EndField>{EndField::Gap32, EndField::Gap52};
   // pushing: point rows within four cells beyond the end that carry load; the first at `at` cells
