@@ -51,10 +51,11 @@ PointValues PlateField::share(const PointValues& I, double x, double y) const {
   return {k.w, k.wx, k.wy, k.wxx, k.wxy, k.wyy};
 }
 
-// The ends' share at (x, y). Their functions live on the grid's part of the plate (attach_ends keeps
-// each cut-off clear of the mirror lines), so a point of a mirror image is read at its image in the
-// part, with the slopes across the line turned as evaluate turns them.
-PointValues PlateField::ends_at(double x, double y) const {
+// The ends' share at (x, y), with I_h F of `cell` (read at its local t, s) if given. Their functions
+// live on the grid's part of the plate (attach_ends keeps each cut-off clear of the mirror lines),
+// so a point of a mirror image is read at its image in the part, with the slopes across the line
+// turned as evaluate turns them.
+PointValues PlateField::ends_at(double x, double y, const int* cell, double t, double s) const {
   PointValues v{0, 0, 0, 0, 0, 0};
   if (p_.ends.empty()) return v;
   const Grid& g = p_.grid;
@@ -62,7 +63,8 @@ PointValues PlateField::ends_at(double x, double y) const {
   if (g.mirror_x && x > g.lx()) x = 2 * g.lx() - x, flips |= 1;
   if (g.mirror_y && y > g.ly()) y = 2 * g.ly() - y, flips |= 2;
   for (size_t f = 0; f < p_.ends.size(); ++f) {
-    const EndDerivatives d = end_function_derivatives(p_.ends[f], p_.end_fields[f], g, x, y);
+    const EndDerivatives d = cell ? end_function_derivatives_in(p_.ends[f], p_.end_fields[f], g, cell[0], cell[1], t, s, x, y)
+                                  : end_function_derivatives(p_.ends[f], p_.end_fields[f], g, x, y);
     const double c = e_[static_cast<Eigen::Index>(f)];
     v = plus(v, {c * d.w, c * d.wx, c * d.wy, c * d.wxx, c * d.wxy, c * d.wyy});
   }
@@ -72,15 +74,18 @@ PointValues PlateField::ends_at(double x, double y) const {
 }
 
 PointValues PlateField::enrichment_at(double x, double y) const {
-  const PointValues e = ends_at(x, y);
+  const PointValues e = ends_at(x, y, nullptr, 0, 0);
   if (!p_.kink || !kink_near(*p_.kink, x, y)) return e;
-  return plus(e, share(evaluate(p_.grid, Pc_, x, y), x, y));
+  const PointValues k = share(evaluate(p_.grid, Pc_, x, y), x, y);
+  return p_.ends.empty() ? k : plus(e, k);
 }
 
 PointValues PlateField::enrichment_in(int ex, int ey, double t, double s, double x, double y) const {
-  const PointValues e = ends_at(x, y);
+  const int cell[2] = {ex, ey};
+  const PointValues e = ends_at(x, y, cell, t, s);
   if (!p_.kink || !kink_near(*p_.kink, x, y)) return e;
-  return plus(e, share(evaluate_in(p_.grid, Pc_, ex, ey, t, s), x, y));
+  const PointValues k = share(evaluate_in(p_.grid, Pc_, ex, ey, t, s), x, y);
+  return p_.ends.empty() ? k : plus(e, k);
 }
 
 PointValues PlateField::at(double x, double y) const {

@@ -26,7 +26,7 @@ class PlateField {
 
  private:
   PointValues share(const PointValues& interpolant, double x, double y) const;
-  PointValues ends_at(double x, double y) const;
+  PointValues ends_at(double x, double y, const int* cell, double t, double s) const;
   const Problem& p_;
   const VectorXd& w_;
   VectorXd c_, Pc_;  // (D31)'s coefficients, and its interpolant's

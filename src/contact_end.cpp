@@ -66,6 +66,8 @@ EndDerivatives end_cutoff(const ContactEnd& e, double x, double y) {
                      X2 * s * s + X1 * c * c / p.rho);
 }
 
+double end_reach(const ContactEnd& e) { return e.outer * std::sqrt(1 + 2 * e.outer / (3 * std::sqrt(3.0) * e.a)); }
+
 namespace {
 // The 16 unknowns of I_h F on cell (ex, ey): each corner's value, slopes and twist of F.
 std::array<double, 16> interpolant_unknowns(const ContactEnd& e, EndField which, const Grid& g, int ex, int ey) {
@@ -117,12 +119,11 @@ EndValue end_function(const ContactEnd& e, EndField which, const Grid& g, double
   return end_function_in_cell(e, which, X, interpolant_unknowns(e, which, g, c.ex, c.ey), c.b, x, y);
 }
 
-EndDerivatives end_function_derivatives(const ContactEnd& e, EndField which, const Grid& g, double x, double y) {
-  const EndDerivatives X = end_cutoff(e, x, y);
-  if (X.w == 0) return {};
-  const CellAt cell = cell_at(g, x, y);
-  const std::array<double, 16> c = interpolant_unknowns(e, which, g, cell.ex, cell.ey);
-  const LocalBasis& b = cell.b;
+namespace {
+// chi (F - I_h F) and its derivatives at (x, y), with I_h F that of cell (ex, ey), b its basis there.
+EndDerivatives derivatives_in(const ContactEnd& e, EndField which, const Grid& g, const EndDerivatives& X, int ex, int ey,
+                              const LocalBasis& b, double x, double y) {
+  const std::array<double, 16> c = interpolant_unknowns(e, which, g, ex, ey);
   EndDerivatives D = end_field(e, which, x, y);  // then D = F - I_h F
   for (int j = 0; j < 16; ++j) {
     D.w -= c[j] * b.v[j], D.wx -= c[j] * b.dx[j], D.wy -= c[j] * b.dy[j];
@@ -136,7 +137,21 @@ EndDerivatives end_function_derivatives(const ContactEnd& e, EndField which, con
           X.w * D.wxy + X.wx * D.wy + X.wy * D.wx + X.wxy * D.w,
           X.w * D.wyy + 2 * X.wy * D.wy + X.wyy * D.w};
 }
+}  // namespace
 
+EndDerivatives end_function_derivatives(const ContactEnd& e, EndField which, const Grid& g, double x, double y) {
+  const EndDerivatives X = end_cutoff(e, x, y);
+  if (X.w == 0) return {};
+  const CellAt c = cell_at(g, x, y);
+  return derivatives_in(e, which, g, X, c.ex, c.ey, c.b, x, y);
+}
+
+EndDerivatives end_function_derivatives_in(const ContactEnd& e, EndField which, const Grid& g, int ex, int ey, double t, double u,
+                                           double x, double y) {
+  const EndDerivatives X = end_cutoff(e, x, y);
+  if (X.w == 0) return {};
+  return derivatives_in(e, which, g, X, ex, ey, bfs_basis(t, u, g.h), x, y);
+}
 
 double end_shift(const std::vector<double>& s, const std::vector<double>& gap) {
   if (s.size() != gap.size() || s.size() < 3) throw std::invalid_argument("end_shift: three or more samples, one gap each");
@@ -154,6 +169,7 @@ double end_shift(const std::vector<double>& s, const std::vector<double>& gap) {
 EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends, const std::vector<EndField>& fields,
                               int others, const OtherLaplacians& laplacians, const std::function<double(double, double)>* load) {
   if (ends.size() != fields.size()) throw std::invalid_argument("assemble_end_blocks: one field per end");
+  if (others > 0 && !laplacians) throw std::invalid_argument("assemble_end_blocks: other functions without their Laplacians");
   const int k = static_cast<int>(ends.size()), N = g.unknowns();
   EndBlocks out{Eigen::MatrixXd::Zero(N, k), Eigen::MatrixXd::Zero(k, k), Eigen::MatrixXd::Zero(others, k), Eigen::VectorXd::Zero(k)};
   Eigen::VectorXd olap(others);

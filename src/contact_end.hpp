@@ -44,6 +44,11 @@ using EndDerivatives = PlaneDerivatives;
 EndDerivatives end_field(const ContactEnd& e, EndField f, double x, double y);
 // The cut-off chi(rho): 1 up to `inner`, the septic smoothstep (C^3) down to 0 at `outer`.
 EndDerivatives end_cutoff(const ContactEnd& e, double x, double y);
+// How far from the end, in a straight line, chi can be nonzero. rho measures arc length along the
+// rim, so the support reaches past `outer` outside the circle: at nu = r - a, the squared distance
+// is nu^2 + 4 a r sin^2(dtheta / 2) <= rho^2 + (nu / a) t^2, largest at nu = outer / sqrt(3), which
+// gives outer^2 (1 + 2 outer / (3 sqrt(3) a)).
+double end_reach(const ContactEnd& e);
 
 // The function an enrichment adds, chi (F - I_h F) with I_h the grid's Hermite interpolant: F less
 // what the bicubics already carry, so that only its part at the end is new. Without the subtraction
@@ -57,6 +62,10 @@ EndValue end_function(const ContactEnd& e, EndField f, const Grid& g, double x, 
 // The same function with its slopes and second derivatives: what a field read at a point (moments,
 // extrema) needs of it.
 EndDerivatives end_function_derivatives(const ContactEnd& e, EndField f, const Grid& g, double x, double y);
+// The same with I_h F that of cell (ex, ey), read at its local (t, u), the point (x, y): on a side
+// of a cell each element has its own second derivatives.
+EndDerivatives end_function_derivatives_in(const ContactEnd& e, EndField f, const Grid& g, int ex, int ey, double t, double u,
+                                           double x, double y);
 
 // Where the end lies, from the gap g(s) that a solve leaves at arc lengths s > 0 into the free side
 // of an end put at s = 0: least squares of g on s^(3/2), s^(5/2), s^(7/2). The gap of an end at

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "contact.hpp"
@@ -64,19 +65,36 @@ double move_of(const Problem& p, const PlateField& field, const End& e) {
   return e.sigma * shift / c.r;
 }
 
+// Each arc at least four cells long, and each gap between arcs at least eight (the points of the
+// ends on either side take four each).
+void check_arcs(const ContactArcs& c, double cell) {
+  std::vector<std::pair<double, double>> arcs = c.arcs;
+  std::sort(arcs.begin(), arcs.end());
+  for (size_t i = 0; i < arcs.size(); ++i) {
+    const auto& [begin, end] = arcs[i];
+    const double next = i + 1 < arcs.size() ? arcs[i + 1].first : arcs[0].first + 2 * M_PI;
+    std::ostringstream m;
+    if (end - begin < 4 * cell) m << "the contact arc [" << begin << ", " << end << "] is shorter than four cells";
+    else if (next - end < 8 * cell) m << "the gap after the contact arc [" << begin << ", " << end << "] is shorter than eight cells";
+    if (!m.str().empty()) throw std::invalid_argument(m.str() + ": its ends cannot be carried apart");
+  }
+}
+
 }  // namespace
 
 EndsSolve solve_located_ends(const Scene& scene, int n, ContactArcs contact, const ExactOptions& o, const EndsOptions& opt) {
   if (!scene.cylinder) throw std::invalid_argument("--obstacle: the located ends need the cylinder's scene");
   if (contact.whole || contact.arcs.empty()) throw std::invalid_argument("the contact has no ends: it is the whole rim, or nothing");
+  if (!(opt.inner > 0 && opt.inner < opt.outer)) throw std::invalid_argument("EndsOptions: the cut-off needs 0 < inner < outer");
+  if (!(opt.dense >= 1) || !(opt.settled > 0) || opt.max_moves < 0)
+    throw std::invalid_argument("EndsOptions: dense >= 1, settled > 0 and max_moves >= 0 are needed");
   SamplingSpec spec{SamplingKind::Edge, EdgeRows{}};
   spec.enrich = opt.enrich;
   const Grid g = scene.grid(n);
   const double cell = g.h / scene.edge.r;
   EndsSolve out;
   for (out.moves = 0; out.moves <= opt.max_moves; ++out.moves) {
-    for (const auto& [begin, end] : contact.arcs)
-      if (end - begin < 4 * cell) throw std::invalid_argument("a contact arc is shorter than four cells: its ends cannot be carried apart");
+    check_arcs(contact, cell);
     Problem p = make_problem(scene, g, spec);
     lay_out(p, contact, opt.dense);
     std::vector<ContactEnd> ends;

@@ -18,7 +18,7 @@ struct EndsOptions {
   double inner = 0.05;       // the ends' cut-off: 1 within `inner` of the end, 0 from `outer` on
   double outer = 0.1;
   double settled = 1e-9;     // the ends stop when none moves by more than this (an angle)
-  int max_moves = 30;        // and the solve fails if they have not after this many
+  int max_moves = 30;        // moves at most; then EndsSolve::settled is false
   EnrichSpec enrich;         // (D31) on the rim too, or not
 };
 
@@ -34,8 +34,10 @@ struct EndsSolve {
 };
 
 // The scene's plate on n cells, the contact starting from `contact` (arcs of the whole rim, not the
-// whole rim). Throws std::invalid_argument naming the scene's parts for a scene that is not a
-// cylinder's, an arc shorter than four cells, or a cut-off that reaches a clamped edge.
+// whole rim). Throws std::invalid_argument, naming what is wrong, for a scene that is not a
+// cylinder's, options out of range (0 < inner < outer, dense >= 1, settled > 0, max_moves >= 0),
+// an arc shorter than four cells or a gap between arcs shorter than eight (each end's points take
+// four), at the start or after a move, or a cut-off that reaches a clamped edge.
 EndsSolve solve_located_ends(const Scene& scene, int n, ContactArcs contact, const ExactOptions& o, const EndsOptions& e);
 
 }  // namespace plate

@@ -184,6 +184,8 @@ EdgeRows rows_on(const Grid& g, const Scene& s, const SamplingSpec& spec) {
 // @end kink-rows
 
 void attach_kink(Problem& p, const KinkEnrichment& e) {
+  // The ends' unknowns follow (D31)'s, so (D31) cannot come after them.
+  if (!p.ends.empty()) throw std::logic_error("attach_kink: the problem carries the ends' functions already");
   p.kink = e;
   p.kink_interp = kink_interpolant(p.grid, e);
   fit_columns(p);
@@ -198,40 +200,39 @@ namespace {
 // reaches one of its extreme angles), found once a cell.
 OtherLaplacians kink_laplacians(const Problem& p) {
   if (!p.kink) return {};
-  const Eigen::MatrixXd P(p.kink_interp);
   std::array<int, 2> cell{-1, -1};
-  std::vector<Eigen::Index> met;
-  return [&p, P, cell, met](int ex, int ey, double x, double y, Eigen::VectorXd& out) mutable {
+  std::vector<int> met;
+  Eigen::MatrixXd Pl;  // P on the cell: its 16 unknowns by the functions met
+  return [&p, cell, met, Pl](int ex, int ey, double x, double y, Eigen::VectorXd& out) mutable {
     out.setZero();
     if (!kink_near(*p.kink, x, y)) return;
     const Grid& g = p.grid;
     const KinkEnrichment& e = *p.kink;
-    const auto dofs = g.element_dofs(ex, ey);
     if (cell != std::array<int, 2>{ex, ey}) {
       cell = {ex, ey}, met.clear();
-      for (Eigen::Index j = 0; j < P.cols(); ++j) {
-        bool in = false;
-        for (int i = 0; i < 16 && !in; ++i) in = dofs[i] >= 0 && P(dofs[i], j) != 0;
-        for (int c = 0; c < 4 && !in; ++c) {
+      const auto dofs = g.element_dofs(ex, ey);
+      std::vector<bool> in(e.size(), false);
+      for (int j = 0; j < e.size(); ++j) {
+        for (int i = 0; i < 16 && !in[j]; ++i) in[j] = dofs[i] >= 0 && p.kink_interp.coeff(dofs[i], j) != 0;
+        for (int c = 0; c < 4 && !in[j]; ++c) {
           const double t = std::atan2((ey + c / 2) * g.h - e.cy, (ex + c % 2) * g.h - e.cx), r = e.a + 0.5 * g.h;
-          in = kink_profile(e, static_cast<int>(j), e.cx + r * std::cos(t), e.cy + r * std::sin(t)).w != 0;
+          in[j] = kink_profile(e, j, e.cx + r * std::cos(t), e.cy + r * std::sin(t)).w != 0;
         }
-        if (in) met.push_back(j);
+        if (in[j]) met.push_back(j);
       }
+      Pl.setZero(16, static_cast<Eigen::Index>(met.size()));
+      for (int i = 0; i < 16; ++i)
+        for (size_t m = 0; dofs[i] >= 0 && m < met.size(); ++m) Pl(i, static_cast<Eigen::Index>(m)) = p.kink_interp.coeff(dofs[i], met[m]);
     }
     const LocalBasis b = bfs_basis((x - ex * g.h) / g.h, (y - ey * g.h) / g.h, g.h);
-    VectorXd unit = VectorXd::Zero(P.cols());
-    for (Eigen::Index j : met) {
-      KinkValue I;
-      for (int i = 0; i < 16; ++i)
-        if (dofs[i] >= 0) {
-          const double c = P(dofs[i], j);
-          I.w += c * b.v[i], I.wx += c * b.dx[i], I.wy += c * b.dy[i], I.wxx += c * b.dxx[i], I.wxy += c * b.dxy[i], I.wyy += c * b.dyy[i];
-        }
-      unit[j] = 1;
+    VectorXd unit = VectorXd::Zero(e.size());
+    for (size_t m = 0; m < met.size(); ++m) {
+      const auto c = Pl.col(static_cast<Eigen::Index>(m));
+      const KinkValue I{c.dot(b.v), c.dot(b.dx), c.dot(b.dy), c.dot(b.dxx), c.dot(b.dxy), c.dot(b.dyy)};
+      unit[met[m]] = 1;
       const KinkValue v = kink_field(e, unit, I, x, y);
-      unit[j] = 0;
-      out[j] = v.wxx + v.wyy;
+      unit[met[m]] = 0;
+      out[met[m]] = v.wxx + v.wyy;
     }
   };
 }
@@ -248,7 +249,12 @@ void attach_ends(Problem& p, const std::vector<ContactEnd>& ends, const std::vec
     double room = std::min({x, y, g.whole_lx() - x, g.whole_ly() - y});  // the clamped edges
     if (g.mirror_x) room = std::min(room, std::abs(g.lx() - x));
     if (g.mirror_y) room = std::min(room, std::abs(g.ly() - y));
-    if (room < e.outer) throw std::invalid_argument("the cut-off of a contact's end reaches a clamped edge or a mirror line");
+    if (room < end_reach(e)) {
+      std::ostringstream m;
+      m << "the cut-off of the contact's end at theta = " << e.theta << " (radius " << e.outer << " along the rim, "
+        << end_reach(e) << " in the plane) reaches a clamped edge or a mirror line, " << room << " away";
+      throw std::invalid_argument(m.str());
+    }
   }
   const int N = g.unknowns(), Kk = p.kink_size(), base = N + Kk, k = static_cast<int>(ends.size());
   const EndBlocks b = assemble_end_blocks(g, ends, fields, Kk, kink_laplacians(p), &p.scene.load);

@@ -173,6 +173,7 @@ EdgePoints spline_rows(const Grid& g, const EdgeCurve& c, const EdgeRows& how, s
 }  // namespace
 
 // @region rim-layout-rows
+// The quadrature of (D28)'s spline rows: four Gauss points on pieces of about a cell.
 std::vector<RowPoint> spline_row_points(const Grid& g, const EdgeCurve& c, const SplineArc& arc, int degree, int j) {
   const Quadrature1D q = gauss_legendre(4);
   const double delta = clamped_bspline_integral(arc, degree, j);
@@ -190,13 +191,12 @@ std::vector<RowPoint> spline_row_points(const Grid& g, const EdgeCurve& c, const
   return out;
 }
 
-namespace {
 // Eq. (D28): the rows of a layout made for the contact. On each spline arc the constraint averaged
 // against its clamped B-splines B_j, (S w)_j = (1 / Delta_j) int B_j(theta) w_h(x(theta)) dtheta with
 // Delta_j = int B_j, weight r Delta_j, placed at the basis' Greville angle; elsewhere a row at each
 // point, weighted by the arc it stands for.
-EdgePoints laid_out_rows(const Grid& g, const EdgeCurve& c, const EdgeRows& how, const RimLayout& L,
-                         std::vector<std::map<int, double>>& rows, std::vector<RimRow>& kinds) {
+static EdgePoints laid_out_rows(const Grid& g, const EdgeCurve& c, const EdgeRows& how, const RimLayout& L,
+                                std::vector<std::map<int, double>>& rows, std::vector<RimRow>& kinds) {
   const int degree = how.degree;
   EdgePoints e;
   e.length = 2 * M_PI * c.r;
@@ -226,6 +226,8 @@ EdgePoints laid_out_rows(const Grid& g, const EdgeCurve& c, const EdgeRows& how,
   return e;
 }
 // @end rim-layout-rows
+
+namespace {
 
 // Whether a point of the whole plate lies in the grid's part, and the share of its weight the part
 // keeps: half on a mirror line, where it stands for itself alone.

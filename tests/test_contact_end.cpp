@@ -15,6 +15,7 @@
 #include "contact_end.hpp"
 #include "dual_active_set.hpp"
 #include "edge.hpp"
+#include "gauss.hpp"
 #include "mirror.hpp"
 #include "problem.hpp"
 #include "rim_rows.hpp"
@@ -247,9 +248,10 @@ TEST(ContactEnd, TheFitFindsAnEndPutOffByHand) {
 namespace {
 // The 2 x 1 lift-off scene's quarter on n cells along x, its rows laid out for contact on
 // [theta_e, pi - theta_e] and its images, with points a cell apart off the arcs.
-Problem quarter_laid_out(int n, double theta_e) {
+Problem quarter_laid_out(int n, double theta_e, bool kink = false) {
   const Scene scene = Scene::rectangle(2, 1).over(Cylinder{1, 0.5, 0.25, 0.0625});
-  const SamplingSpec spec{SamplingKind::Edge, EdgeRows{}};
+  SamplingSpec spec{SamplingKind::Edge, EdgeRows{}};
+  if (kink) spec.enrich.kind = EnrichSpec::Kind::Ring;
   const Grid whole = scene.grid(n);
   Problem p = make_problem(scene, part_of(whole, find_mirrors(scene, whole, spec)), spec);
   const double cell = p.grid.h / 0.25;
@@ -262,8 +264,9 @@ Problem quarter_laid_out(int n, double theta_e) {
 
 // The ends' functions as part of a problem (attach_ends): the space only grows and the rows are the
 // same, so the constrained minimum of the energy cannot rise, and it falls since the end's field is
-// new to the grid; the answer is certified, refinement (D22) included; each column of S is the
-// function read at the row, and the field read at a point is the grid's plus the ends' share.
+// new to the grid; the answer is certified, refinement (D22) included. The field read at a point is
+// the grid's plus the ends' share, and read in the mirror image it is the same with the slopes
+// across the line turned. A second attach, and a cut-off that reaches a mirror line, are refused.
 TEST(ContactEnd, TheEndsFunctionsLowerTheEnergyOfTheSameRows) {
   const double theta_e = 0.98;
   Problem plain = quarter_laid_out(64, theta_e);
@@ -279,26 +282,104 @@ TEST(ContactEnd, TheEndsFunctionsLowerTheEnergyOfTheSameRows) {
   EXPECT_LT(e1, e0 - 1e-9 * std::abs(e0));
   EXPECT_GT(e1, e0 - 1e-3 * std::abs(e0));
   EXPECT_NE(r1.w[p.unknowns() - 1], 0.0);
-  int points = 0;
-  for (int k = 0; k < p.sampling.edge_size(); ++k) {
-    if (!p.sampling.rim_rows[k].point()) continue;
-    const int row = p.sampling.edge_begin + k;
-    for (int f = 0; f < 2; ++f) {
-      const double want = end_function(e, f ? EndField::Gap52 : EndField::Gap32, g, p.sampling.x[row], p.sampling.y[row]).w;
-      EXPECT_DOUBLE_EQ(p.sampling.S.coeff(row, p.unknowns() - 2 + f), want);
-      points += want != 0;
-    }
-  }
-  EXPECT_GT(points, 2);
   const double x = e.cx + 0.27 * std::cos(e.theta - 0.05), y = e.cy + 0.27 * std::sin(e.theta - 0.05);
   const VectorXd grid_only = r1.w.head(g.unknowns());
   const double ends = r1.w[p.unknowns() - 2] * end_function(e, EndField::Gap32, g, x, y).w +
                       r1.w[p.unknowns() - 1] * end_function(e, EndField::Gap52, g, x, y).w;
-  EXPECT_NEAR(PlateField(p, r1.w).at(x, y).w, evaluate(g, grid_only, x, y).w + ends, 1e-15);
+  const PlateField field(p, r1.w);
+  EXPECT_NEAR(field.at(x, y).w, evaluate(g, grid_only, x, y).w + ends, 1e-15);
   EXPECT_NE(ends, 0.0);
+  const PointValues here = field.enrichment_at(x, y), there = field.enrichment_at(2 * g.lx() - x, y);
+  EXPECT_NE(here.wx, 0.0);
+  // (2 lx - x is folded back to x only to round-off.)
+  EXPECT_NEAR(there.w, here.w, 1e-9 * std::abs(here.w));
+  EXPECT_NEAR(there.wx, -here.wx, 1e-9 * std::abs(here.wx));
+  EXPECT_NEAR(there.wy, here.wy, 1e-9 * std::abs(here.wy));
+  EXPECT_NEAR(there.wxy, -here.wxy, 1e-9 * std::abs(here.wxy));
   EXPECT_THROW(attach_ends(p, {e}, {EndField::Gap52}), std::logic_error);
   Problem near_line = quarter_laid_out(64, theta_e);
   ContactEnd too_close = e;
-  too_close.outer = 0.25;  // reaches the mirror line y = 0.5
+  too_close.outer = 0.15;  // its reach, 0.167 in the plane, crosses the mirror line x = 1 (0.139 away)
   EXPECT_THROW(attach_ends(near_line, {too_close}, {EndField::Gap52}), std::invalid_argument);
+}
+
+// The ends' columns of S: at a point row the function's value, on a spline row its average against
+// the row's spline, here by a rule of its own (eight Gauss points on each sixteenth of a span). The
+// rows take four on pieces of about a cell, not split where I_h F's curvature jumps at the cells'
+// sides: that rule defines the constraint, for the grid's functions as for these, and it stands
+// within a percent of the finer one, so a row read on the wrong arc, basis or circle fails. The
+// grid's columns are as they were without the ends.
+TEST(ContactEnd, TheEndsColumnsReadEveryRowByItsOwnRule) {
+  const double theta_e = 0.98;
+  const Problem plain = quarter_laid_out(64, theta_e);
+  Problem p = quarter_laid_out(64, theta_e);
+  const Grid& g = p.grid;
+  const ContactEnd e{g.lx(), g.ly(), 0.25, M_PI + theta_e, -1, 0.05, 0.1};
+  attach_ends(p, {e}, {EndField::Gap52});
+  const int N = g.unknowns(), col = p.unknowns() - 1;
+  const RowSpMat grid_part = p.sampling.S.leftCols(N), before = plain.sampling.S.leftCols(N);
+  EXPECT_EQ((RowSpMat(grid_part - before)).norm(), 0.0);
+  const Quadrature1D q = gauss_legendre(8);
+  int points = 0, splines = 0;
+  double largest = 0, worst = 0;
+  for (int k = 0; k < p.sampling.edge_size(); ++k) {
+    const int row = p.sampling.edge_begin + k;
+    const RimRow& r = p.sampling.rim_rows[k];
+    double want = 0;
+    if (r.point()) {
+      want = end_function(e, EndField::Gap52, g, p.sampling.x[row], p.sampling.y[row]).w;
+      EXPECT_DOUBLE_EQ(p.sampling.S.coeff(row, col), want);
+      points += want != 0;
+      continue;
+    }
+    const SplineArc& arc = p.sampling.rim.arcs[r.arc];
+    for (int span = r.basis; span <= r.basis + 3; ++span)
+      for (int piece = 0; piece < 16; ++piece)
+        for (size_t i = 0; i < q.points.size(); ++i) {
+          const double lo = arc.knot(span, 3), hi = arc.knot(span + 1, 3), t = lo + (hi - lo) * (piece + q.points[i]) / 16;
+          want += clamped_bspline(arc, 3, r.basis, t) * (hi - lo) * q.weights[i] / 16 *
+                  end_function(e, EndField::Gap52, g, e.cx + e.a * std::cos(t), e.cy + e.a * std::sin(t)).w;
+        }
+    want /= clamped_bspline_integral(arc, 3, r.basis);
+    splines += want != 0;
+    largest = std::max(largest, std::abs(want));
+    worst = std::max(worst, std::abs(p.sampling.S.coeff(row, col) - want));
+  }
+  EXPECT_GT(points, 2);
+  EXPECT_GT(splines, 2);
+  EXPECT_LT(worst, 1e-2 * largest);
+}
+
+// With (D31) on the rim too, the ends' cross block with its functions: attach_ends forms only the
+// functions met in each cell; here every function is formed at every point, and K's entries must
+// be the same.
+TEST(ContactEnd, TheCrossBlockWithTheKinksFunctionsMissesNone) {
+  const double theta_e = 0.98;
+  Problem p = quarter_laid_out(64, theta_e, true);
+  ASSERT_TRUE(p.kink.has_value());
+  const Grid& g = p.grid;
+  const int N = g.unknowns(), Kk = p.kink->size();
+  const ContactEnd e{g.lx(), g.ly(), 0.25, M_PI + theta_e, -1, 0.05, 0.1};
+  const Eigen::MatrixXd P(p.kink_interp);
+  const OtherLaplacians every = [&](int ex, int ey, double x, double y, Eigen::VectorXd& out) {
+    const auto dofs = g.element_dofs(ex, ey);
+    const LocalBasis b = bfs_basis((x - ex * g.h) / g.h, (y - ey * g.h) / g.h, g.h);
+    for (int j = 0; j < Kk; ++j) {
+      KinkValue I;
+      for (int i = 0; i < 16; ++i)
+        if (dofs[i] >= 0)
+          I.w += P(dofs[i], j) * b.v[i], I.wx += P(dofs[i], j) * b.dx[i], I.wy += P(dofs[i], j) * b.dy[i],
+              I.wxx += P(dofs[i], j) * b.dxx[i], I.wxy += P(dofs[i], j) * b.dxy[i], I.wyy += P(dofs[i], j) * b.dyy[i];
+      const KinkValue v = kink_field(*p.kink, VectorXd::Unit(Kk, j), I, x, y);
+      out[j] = v.wxx + v.wyy;
+    }
+  };
+  const EndBlocks full = assemble_end_blocks(g, {e}, {EndField::Gap52}, Kk, every);
+  attach_ends(p, {e}, {EndField::Gap52});
+  int nonzero = 0;
+  for (int j = 0; j < Kk; ++j) {
+    EXPECT_NEAR(p.K.coeff(N + j, N + Kk), full.cross(j, 0), 1e-13 * full.cross.cwiseAbs().maxCoeff()) << "function " << j;
+    nonzero += full.cross(j, 0) != 0;
+  }
+  EXPECT_GE(nonzero, 2);
 }

@@ -1,15 +1,19 @@
-// contact_end_study: the lift-off scene with the field of each contact's end carried (contact_end.hpp)
-// and the end located by the fit of the gap beyond it, a step towards issue 39 that `plate` does not
-// take yet. A plate lx x 1 over the paper's cylinder at its centre, solved on the quarter its
-// mirror lines leave (which holds one end, at pi + theta_e): rows averaged against graded clamped
-// splines on the contact arcs [theta_e, pi - theta_e] and its images, points a cell apart off them
-// and `--dense` per cell for four cells beyond each end; the space widened by chi (F - I_h F) of
-// F_32 and F_52 at the end (attach_ends), and with --kink by (D31)'s functions too; solved exactly,
-// with --refine refined (D22); the end moved by the fit (at most half a cell a step) until it moves less
-// than 1e-9, and with --consistent then pushed on, by bisection, to where no point beyond it bears
-// load. Prints, per grid, the end, max w (at the centre), the two coefficients, the moves and the
-// point rows beyond the end that push.
+// contact_end_study: lift-off scenes with the field of each contact's end carried (contact_end.hpp)
+// and each end located by the fit of the gap beyond it, a step towards issue 39 that `plate` does
+// not take yet. Two modes.
+// - Default: a plate lx x 1 over the paper's cylinder at its centre, solved on the quarter its
+//   mirror lines leave (which holds one end, at pi + theta_e): rows averaged against graded clamped
+//   splines on the contact arcs [theta_e, pi - theta_e] and its images, points a cell apart off
+//   them and `--dense` per cell for four cells beyond each end (from `--skip` cells on); the space
+//   widened by F_32 and F_52 at the end (attach_ends; --plain: not), and with --kink by (D31)'s
+//   functions too; solved exactly (--refine: refined, D22); the end moved by the fit (at most half
+//   a cell a step) until it moves less than 1e-9, and with --consistent then pushed on, by
+//   bisection, to where no point beyond it bears load. Prints, per grid, the end, max w (at the
+//   centre), the two coefficients, the moves and the point rows beyond the end that push.
+// - --whole (with --centre x,y): any such scene on the whole plate, every end carried and moved
+//   (located_ends.hpp), from the contact of the default solve on the same grid.
 //   build/contact_end_study --lx 2 --from 160 --to 320 --step 16 --kink
+//   build/contact_end_study --whole --lx 1.5 --centre 0.6,0.45 --kink --from 96 --to 192 --step 48
 // Not run by make: what it measures is in the closing notes of issue 39.
 #include <CLI/CLI.hpp>
 
@@ -24,7 +28,6 @@
 #include "dual_active_set.hpp"
 #include "edge.hpp"
 #include "extrema.hpp"
-#include "gauss.hpp"
 #include "located_ends.hpp"
 #include "norms.hpp"
 #include "rim_exchange.hpp"
@@ -86,7 +89,7 @@ Answer solve_once(const Scene& scene, int n, double theta_e, const std::vector<E
   const int k = static_cast<int>(fields.size());
   const ContactEnd end{cx, cy, a, M_PI + theta_e, -1, 0.05, 0.1};
   const double ex = cx + a * std::cos(end.theta), ey = cy + a * std::sin(end.theta);
-  if (std::min({cx - ex, cy - ey, ex, ey}) < end.outer)  // the mirror lines, and the clamped edges
+  if (std::min({cx - ex, cy - ey, ex, ey}) < end_reach(end))  // the mirror lines, and the clamped edges
     throw std::invalid_argument("--start: the end's cut-off would cross a mirror line or a clamped edge");
   lay_out(p, theta_e, dense, skip);
   if (k) attach_ends(p, std::vector<ContactEnd>(k, end), fields);
@@ -168,6 +171,8 @@ int main(int argc, char** argv) {
   app.add_option("--centre", centre, "with --whole: the cylinder's centre (default the plate's)")->expected(2)->delimiter(',');
   CLI11_PARSE(app, argc, argv);
   if (whole) {
+    if (refined || consistent || plain || skip > 0 || app.count("--start"))
+      return std::fprintf(stderr, "contact_end_study: --whole takes --lx, --centre, --kink, --dense and the grids only\n"), 2;
     const double cx = centre.empty() ? lx / 2 : centre[0], cy = centre.empty() ? 0.5 : centre[1];
     EndsOptions opt;
     opt.dense = dense;
