@@ -6,10 +6,11 @@
 //   splines on the contact arcs [theta_e, pi - theta_e] and its images, points a cell apart off
 //   them and `--dense` per cell for four cells beyond each end (from `--skip` cells on); the space
 //   widened by F_32 and F_52 at the end (attach_ends; --plain: not), and with --kink by (D31)'s
-//   functions too; solved exactly (--refine: refined, D22); the end moved by the fit (at most half
-//   a cell a step) until it moves less than 1e-9, and with --consistent then pushed on, by
-//   bisection, to where no point beyond it bears load. Prints, per grid, the end, max w (at the
-//   centre), the two coefficients, the moves and the point rows beyond the end that push.
+//   functions too; solved exactly (--refine: refined, D22); the end moved by the fit of the gap
+//   from a quarter of a cell to `--fit-cells` beyond it (on s^(3/2), s^(5/2), s^(7/2), or the
+//   powers of `--fit-powers`; at most half a cell a step) until it moves less than 1e-9, and with --consistent then pushed on, by bisection, to where no point beyond
+//   it bears load. Prints, per grid, the end, max w (at the centre), the two coefficients, the
+//   moves and the point rows beyond the end that push.
 // - --whole (with --centre x,y): any such scene on the whole plate, every end carried and moved
 //   (located_ends.hpp), from the contact of the default solve on the same grid.
 //   build/contact_end_study --lx 2 --from 160 --to 320 --step 16 --kink
@@ -50,6 +51,19 @@ struct Answer {
 
 bool with_kink = false;  // the space widened by (D31) too
 bool refined = false;    // the refinement (D22)
+double fit_cells = 6;    // the fit's reach beyond the end
+
+// --fit-powers: end_shift's fit with other powers of s, the first two 3/2 and 5/2.
+std::vector<double> fit_powers;
+double shift_by_powers(const std::vector<double>& s, const std::vector<double>& gap) {
+  Eigen::MatrixXd A(s.size(), fit_powers.size());
+  Eigen::VectorXd b = Eigen::Map<const Eigen::VectorXd>(gap.data(), static_cast<Eigen::Index>(gap.size()));
+  for (size_t i = 0; i < s.size(); ++i)
+    for (size_t k = 0; k < fit_powers.size(); ++k) A(i, k) = std::pow(s[i], fit_powers[k]);
+  const Eigen::VectorXd c = A.colPivHouseholderQr().solve(b);
+  if (!(c[1] > 0)) throw std::invalid_argument("--fit-powers: the gap does not open like an end's");
+  return -0.4 * c[0] / c[1];
+}
 
 // The rows for contact on [theta_e, pi - theta_e] and its images: graded splines there, points a
 // cell apart elsewhere and `dense` per cell for four cells beyond each end (from `skip` cells on).
@@ -109,13 +123,14 @@ Answer solve_once(const Scene& scene, int n, double theta_e, const std::vector<E
       if (!out.pushing++) out.nearest_push = beyond * a / h, out.push_load = r.lambda[p.sampling.edge_begin + e];
     }
   }
-  // The gap beyond the end from a quarter to six cells, and the fit's move, at most half a cell.
+  // The gap beyond the end from a quarter of a cell to `fit_cells` cells, and the fit's move, at most
+  // half a cell.
   std::vector<double> at, gap;
   for (int i = 0; i < 80; ++i) {
-    const double s = (0.25 + 5.75 * i / 79.0) * h, th = M_PI + theta_e - s / a;
+    const double s = (0.25 + (fit_cells - 0.25) * i / 79.0) * h, th = M_PI + theta_e - s / a;
     at.push_back(s), gap.push_back(w_at(cx + a * std::cos(th), cy + a * std::sin(th)) - kHeight);
   }
-  shift = std::clamp(end_shift(at, gap), -h / 2, h / 2) / a;
+  shift = std::clamp(fit_powers.empty() ? end_shift(at, gap) : shift_by_powers(at, gap), -h / 2, h / 2) / a;
   return out;
 }
 
@@ -164,6 +179,8 @@ int main(int argc, char** argv) {
   app.add_flag("--consistent", consistent, "then extend the contact by bisection until no point beyond an end pushes");
   app.add_flag("--kink", with_kink, "the kink of the line load carried too (D31)");
   app.add_flag("--refine", refined, "refine each solve (D22)");
+  app.add_option("--fit-powers", fit_powers, "the fit's powers of s, from 3/2 and 5/2 (default 3/2, 5/2, 7/2)")->delimiter(',')->expected(3, 8);
+  app.add_option("--fit-cells", fit_cells, "how far beyond the end the fit reads the gap, in cells")->check(CLI::Range(1.0, 12.0));
   app.add_flag("--plain", plain, "the plain space (the end still located by the fit)");
   bool whole = false;
   std::vector<double> centre;
@@ -171,7 +188,7 @@ int main(int argc, char** argv) {
   app.add_option("--centre", centre, "with --whole: the cylinder's centre (default the plate's)")->expected(2)->delimiter(',');
   CLI11_PARSE(app, argc, argv);
   if (whole) {
-    if (refined || consistent || plain || skip > 0 || app.count("--start"))
+    if (refined || consistent || plain || skip > 0 || app.count("--start") || app.count("--fit-cells") || app.count("--fit-powers"))
       return std::fprintf(stderr, "contact_end_study: --whole takes --lx, --centre, --kink, --dense and the grids only\n"), 2;
     const double cx = centre.empty() ? lx / 2 : centre[0], cy = centre.empty() ? 0.5 : centre[1];
     EndsOptions opt;
