@@ -25,22 +25,6 @@ std::vector<End> ends_of(const ContactArcs& c) {
   return out;
 }
 
-// The rows for `contact`: graded splines on each arc, right to its ends (no margin), points a cell
-// apart off the arcs, and `dense` a cell for four cells beyond each end in place of the lattice's.
-void lay_out(Problem& p, const ContactArcs& contact, double dense) {
-  const double h = p.grid.h, cell = h / p.scene.edge.r;
-  RimLayout L = layout_for(contact, 0, 2 * cell, 4 * cell, edge_points(p.scene.edge, h).theta, 1e-14);
-  for (const End& e : ends_of(contact)) {
-    auto beyond = [&](double t) { return std::remainder(t - e.theta, 2 * M_PI) * e.sigma; };
-    // A lattice point a hair beyond the end would bear the load the dense points share.
-    L.points.erase(std::remove_if(L.points.begin(), L.points.end(), [&](double t) { return beyond(t) > 0 && beyond(t) < 4.01 * cell; }),
-                   L.points.end());
-    for (int i = 1; i <= 4 * dense; ++i) L.points.push_back(std::fmod(e.theta + e.sigma * i * cell / dense + 4 * M_PI, 2 * M_PI));
-  }
-  std::sort(L.points.begin(), L.points.end());
-  lay_out_rim(p, L);
-}
-
 // The gap w - phi that `field` leaves beyond end e, from a quarter to six cells, and the move of the
 // end that its fit asks for (end_shift, at most half a cell), as an angle. The fit is an expansion
 // in the move over the distance, so it holds only for an end put within a fraction of a cell of
@@ -82,6 +66,21 @@ void check_arcs(const ContactArcs& c, double cell) {
 
 }  // namespace
 
+void lay_out_for_ends(Problem& p, const ContactArcs& contact, double dense, double skip) {
+  const double h = p.grid.h, cell = h / p.scene.edge.r;
+  RimLayout L = layout_for(contact, 0, 2 * cell, 4 * cell, edge_points(p.scene.edge, h).theta, 1e-14);
+  for (const End& e : ends_of(contact)) {
+    auto beyond = [&](double t) { return std::remainder(t - e.theta, 2 * M_PI) * e.sigma; };
+    // A lattice point a hair beyond the end would bear the load the dense points share.
+    L.points.erase(std::remove_if(L.points.begin(), L.points.end(), [&](double t) { return beyond(t) > 0 && beyond(t) < 4.01 * cell; }),
+                   L.points.end());
+    for (int i = 1; i <= 4 * dense; ++i)
+      if (i >= skip * dense) L.points.push_back(std::fmod(e.theta + e.sigma * i * cell / dense + 4 * M_PI, 2 * M_PI));
+  }
+  std::sort(L.points.begin(), L.points.end());
+  lay_out_rim(p, L);
+}
+
 EndsSolve solve_located_ends(const Scene& scene, int n, ContactArcs contact, const ExactOptions& o, const EndsOptions& opt) {
   if (!scene.cylinder) throw std::invalid_argument("--obstacle: the located ends need the cylinder's scene");
   if (contact.whole || contact.arcs.empty()) throw std::invalid_argument("the contact has no ends: it is the whole rim, or nothing");
@@ -96,7 +95,7 @@ EndsSolve solve_located_ends(const Scene& scene, int n, ContactArcs contact, con
   for (out.moves = 0; out.moves <= opt.max_moves; ++out.moves) {
     check_arcs(contact, cell);
     Problem p = make_problem(scene, g, spec);
-    lay_out(p, contact, opt.dense);
+    lay_out_for_ends(p, contact, opt.dense, 0);
     std::vector<ContactEnd> ends;
     std::vector<EndField> fields;
     for (const End& e : ends_of(contact))

@@ -33,6 +33,11 @@ struct EndsSolve {
   std::vector<double> nearest_push;
 };
 
+// The rows for `contact` (arcs of the whole rim): graded splines on each arc right to its ends (no
+// margin), points a cell apart off the arcs, and `dense` a cell for four cells beyond each end in
+// place of the lattice's, from `skip` cells on.
+void lay_out_for_ends(Problem& p, const ContactArcs& contact, double dense, double skip);
+
 // The scene's plate on n cells, the contact starting from `contact` (arcs of the whole rim, not the
 // whole rim). Throws std::invalid_argument, naming what is wrong, for a scene that is not a
 // cylinder's, options out of range (0 < inner < outer, dense >= 1, settled > 0, max_moves >= 0),

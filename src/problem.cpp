@@ -211,14 +211,14 @@ OtherLaplacians kink_laplacians(const Problem& p) {
     if (cell != std::array<int, 2>{ex, ey}) {
       cell = {ex, ey}, met.clear();
       const auto dofs = g.element_dofs(ex, ey);
-      std::vector<bool> in(e.size(), false);
       for (int j = 0; j < e.size(); ++j) {
-        for (int i = 0; i < 16 && !in[j]; ++i) in[j] = dofs[i] >= 0 && p.kink_interp.coeff(dofs[i], j) != 0;
-        for (int c = 0; c < 4 && !in[j]; ++c) {
+        bool in = false;
+        for (int i = 0; i < 16 && !in; ++i) in = dofs[i] >= 0 && p.kink_interp.coeff(dofs[i], j) != 0;
+        for (int c = 0; c < 4 && !in; ++c) {
           const double t = std::atan2((ey + c / 2) * g.h - e.cy, (ex + c % 2) * g.h - e.cx), r = e.a + 0.5 * g.h;
-          in[j] = kink_profile(e, j, e.cx + r * std::cos(t), e.cy + r * std::sin(t)).w != 0;
+          in = kink_profile(e, j, e.cx + r * std::cos(t), e.cy + r * std::sin(t)).w != 0;
         }
-        if (in[j]) met.push_back(j);
+        if (in) met.push_back(j);
       }
       Pl.setZero(16, static_cast<Eigen::Index>(met.size()));
       for (int i = 0; i < 16; ++i)

@@ -65,31 +65,6 @@ double shift_by_powers(const std::vector<double>& s, const std::vector<double>& 
   return -0.4 * c[0] / c[1];
 }
 
-// The rows for contact on [theta_e, pi - theta_e] and its images: graded splines there, points a
-// cell apart elsewhere and `dense` per cell for four cells beyond each end (from `skip` cells on).
-void lay_out(Problem& p, double theta_e, double dense, double skip) {
-  const double h = p.grid.h, cell = h / kRadius;
-  ContactArcs contact;
-  contact.arcs = {{theta_e, M_PI - theta_e}, {M_PI + theta_e, 2 * M_PI - theta_e}};
-  // The layout (D28) makes for a contact, with no margin and the ends snapped only to round-off.
-  RimLayout L = layout_for(contact, 0, 2 * cell, 4 * cell, edge_points(p.scene.edge, h).theta, 1e-14);
-  for (double end : {theta_e, M_PI - theta_e, M_PI + theta_e, 2 * M_PI - theta_e}) {
-    const double free = (end == theta_e || end == M_PI + theta_e) ? -1 : 1;
-    // The dense points stand for the lattice's there: a lattice point a hair beyond the end would
-    // bear the load the dense points share (at n = 128 one lies 0.004 cells beyond).
-    L.points.erase(std::remove_if(L.points.begin(), L.points.end(),
-                                  [&](double t) {
-                                    const double b = std::remainder(t - end, 2 * M_PI) * free;
-                                    return b > 0 && b < 4.01 * cell;
-                                  }),
-                   L.points.end());
-    for (int i = 1; i <= 4 * dense; ++i)
-      if (i >= skip * dense) L.points.push_back(std::fmod(end + free * i * cell / dense + 4 * M_PI, 2 * M_PI));
-  }
-  std::sort(L.points.begin(), L.points.end());
-  lay_out_rim(p, L);
-}
-
 // One solve with the end at theta_e; `fields` empty: the plain space. `shift` gets the fit's move of
 // the end (an angle, at most half a cell). The end's cut-off is checked here against the quarter's
 // mirror lines too, for the message; attach_ends checks it again.
@@ -105,7 +80,9 @@ Answer solve_once(const Scene& scene, int n, double theta_e, const std::vector<E
   const double ex = cx + a * std::cos(end.theta), ey = cy + a * std::sin(end.theta);
   if (std::min({cx - ex, cy - ey, ex, ey}) < end_reach(end))  // the mirror lines, and the clamped edges
     throw std::invalid_argument("--start: the end's cut-off would cross a mirror line or a clamped edge");
-  lay_out(p, theta_e, dense, skip);
+  ContactArcs contact;  // [theta_e, pi - theta_e] and its images
+  contact.arcs = {{theta_e, M_PI - theta_e}, {M_PI + theta_e, 2 * M_PI - theta_e}};
+  lay_out_for_ends(p, contact, dense, skip);
   if (k) attach_ends(p, std::vector<ContactEnd>(k, end), fields);
   ExactOptions o;
   o.refine = refined;
