@@ -8,6 +8,7 @@
 
 #include "bfs_element.hpp"
 #include "gauss.hpp"
+#include "implicit_quadrature.hpp"
 
 namespace plate {
 
@@ -166,6 +167,60 @@ double end_shift(const std::vector<double>& s, const std::vector<double>& gap) {
   return -0.4 * c[0] / c[1];
 }
 
+namespace {
+// The circle (x - cx)^2 + (y - cy)^2 - a^2 on the square [sx, sx + size] x [sy, sy + size], negated
+// for its outside: biquadratic, so the bicubic is the circle itself.
+Bicubic circle_on(const ContactEnd& e, double sx, double sy, double size, bool outside) {
+  std::array<CornerJet, 4> c;
+  for (int k = 0; k < 4; ++k) {
+    const double x = sx + (k & 1) * size - e.cx, y = sy + (k >> 1) * size - e.cy, s = outside ? -1 : 1;
+    c[k] = {s * (x * x + y * y - e.a * e.a), s * 2 * x, s * 2 * y, 0};
+  }
+  return bicubic_from_corners(c, size, size);
+}
+// rho^2 - c^2 on the same square, rho^2 = t^2 + nu^2 of the end's fitted coordinates: its bicubic
+// Hermite interpolant from the corners, which follows the curve rho = c to the interpolant's order
+// (a cut-off's edge is smooth, and a square spans at most a cell of it).
+Bicubic cutoff_circle_on(const ContactEnd& e, double c, double sx, double sy, double size) {
+  std::array<CornerJet, 4> jets;
+  for (int k = 0; k < 4; ++k) {
+    const double x = sx + (k & 1) * size, y = sy + (k >> 1) * size, X = x - e.cx, Y = y - e.cy;
+    const double r2 = X * X + Y * Y, r = std::sqrt(r2), sa = e.sigma * e.a;
+    if (!(r2 > 0)) return Bicubic{{1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1}};  // the fitted coordinates end at the centre: taken as uncut
+    const double t = e.a * std::remainder(std::atan2(Y, X) - e.theta, 2 * M_PI) * e.sigma, nu = r - e.a;
+    const double tx = -sa * Y / r2, ty = sa * X / r2, txy = sa * (Y * Y - X * X) / (r2 * r2);
+    const double nx = X / r, ny = Y / r, nxy = -X * Y / (r2 * r);
+    jets[k] = {t * t + nu * nu - c * c, 2 * (t * tx + nu * nx), 2 * (t * ty + nu * ny),
+               2 * (tx * ty + t * txy + nx * ny + nu * nxy)};
+  }
+  return bicubic_from_corners(jets, size, size);
+}
+
+// The curves that cut the square across which the blocks' integrand is not smooth: each rim (the
+// end's functions kink across its contact side, (D31)'s across all of it) and the edges of each
+// end's cut-off, where it is only C^3; each once.
+std::vector<Bicubic> cutting_curves(const std::vector<ContactEnd>& ends, double sx, double sy, double size) {
+  std::vector<Bicubic> out;
+  for (size_t f = 0; f < ends.size(); ++f) {
+    const ContactEnd& e = ends[f];
+    const auto same = [&](bool end) {
+      for (size_t g = 0; g < f; ++g) {
+        const ContactEnd& o = ends[g];
+        if (o.cx == e.cx && o.cy == e.cy && o.a == e.a && (!end || (o.theta == e.theta && o.inner == e.inner && o.outer == e.outer)))
+          return true;
+      }
+      return false;
+    };
+    if (!same(false))
+      if (Bicubic b = circle_on(e, sx, sy, size, false); b.sign() == 0) out.push_back(b);
+    if (!same(true))
+      for (double c : {e.inner, e.outer})
+        if (Bicubic b = cutoff_circle_on(e, c, sx, sy, size); b.sign() == 0) out.push_back(b);
+  }
+  return out;
+}
+}  // namespace
+
 EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends, const std::vector<EndField>& fields,
                               int others, const OtherLaplacians& laplacians, const std::function<double(double, double)>* load) {
   if (ends.size() != fields.size()) throw std::invalid_argument("assemble_end_blocks: one field per end");
@@ -173,12 +228,11 @@ EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends
   const int k = static_cast<int>(ends.size()), N = g.unknowns();
   EndBlocks out{Eigen::MatrixXd::Zero(N, k), Eigen::MatrixXd::Zero(k, k), Eigen::MatrixXd::Zero(others, k), Eigen::VectorXd::Zero(k)};
   Eigen::VectorXd olap(others);
-  const Quadrature1D q = gauss_legendre(6);
+  const Quadrature1D q = gauss_legendre(kEndGaussPoints);
   // Halvings towards an end, where the integrand of the functions' own block grows like 1/rho: the
   // square left after 30 holds a share of about 2^-30 of the cell's, which the Gauss rule on it
-  // still takes in part. Across the rim, where the integrand kinks: 9 halvings, which leave a
-  // relative error of order 4^-9 in the squares the rim cuts (an estimate, not measured).
-  const int to_end = 30, to_rim = 9;
+  // still takes in part.
+  const int to_end = 30;
   auto distance = [](double px, double py, double sx, double sy, double size) {
     return std::hypot(std::max({sx - px, 0.0, px - sx - size}), std::max({sy - py, 0.0, py - sy - size}));
   };
@@ -187,6 +241,7 @@ EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends
   std::vector<double> lap(k);
   std::vector<EndDerivatives> cut(k);
   std::vector<std::array<double, 16>> interpolants(k);
+  std::vector<WeightedPoint> pts;
   for (int ey = 0; ey < g.ny; ++ey)
     for (int ex = 0; ex < g.nx; ++ex) {
       const double x0 = ex * g.h, y0 = ey * g.h;
@@ -195,44 +250,55 @@ EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends
       if (!near) continue;
       const auto dofs = g.element_dofs(ex, ey);
       for (int f = 0; f < k; ++f) interpolants[f] = interpolant_unknowns(ends[f], fields[f], g, ex, ey);
+      auto add_point = [&](double x, double y, double wq) {
+        bool any = false;
+        for (int f = 0; f < k; ++f) any = (cut[f] = end_cutoff(ends[f], x, y)).w != 0 || any;
+        if (!any) return;
+        const LocalBasis b = bfs_basis((x - x0) / g.h, (y - y0) / g.h, g.h);
+        const double fxy = load ? (*load)(x, y) : 0.0;
+        for (int f = 0; f < k; ++f) {
+          const EndValue v = cut[f].w == 0 ? EndValue{} : end_function_in_cell(ends[f], fields[f], cut[f], interpolants[f], b, x, y);
+          lap[f] = v.lap;
+          out.load[f] += wq * fxy * v.w;
+        }
+        for (int i = 0; i < 16; ++i)
+          if (dofs[i] >= 0)
+            for (int f = 0; f < k; ++f) out.border(dofs[i], f) += wq * (b.dxx[i] + b.dyy[i]) * lap[f];
+        for (int f = 0; f < k; ++f)
+          for (int l = 0; l < k; ++l) out.own(f, l) += wq * lap[f] * lap[l];
+        if (others == 0) return;
+        laplacians(ex, ey, x, y, olap);
+        for (int j = 0; j < others; ++j)
+          if (olap[j] != 0)
+            for (int f = 0; f < k; ++f) out.cross(j, f) += wq * olap[j] * lap[f];
+      };
       auto square = [&](auto&& self, double sx, double sy, double size, int depth) -> void {
         bool split = false;
-        for (int f = 0; f < k; ++f) {
-          const ContactEnd& e = ends[f];
-          split = split || (depth < to_end && distance(px[f], py[f], sx, sy, size) < size) ||
-                  (depth < to_rim && std::abs(std::hypot(sx + size / 2 - e.cx, sy + size / 2 - e.cy) - e.a) < 0.75 * size);
-        }
+        for (int f = 0; f < k; ++f) split = split || (depth < to_end && distance(px[f], py[f], sx, sy, size) < size);
         if (split) {
           const double h2 = size / 2;
           self(self, sx, sy, h2, depth + 1), self(self, sx + h2, sy, h2, depth + 1);
           self(self, sx, sy + h2, h2, depth + 1), self(self, sx + h2, sy + h2, h2, depth + 1);
           return;
         }
-        for (size_t i = 0; i < q.points.size(); ++i)
-          for (size_t j = 0; j < q.points.size(); ++j) {
-            const double x = sx + size * q.points[i], y = sy + size * q.points[j];
-            const double wq = size * size * q.weights[i] * q.weights[j];
-            bool any = false;
-            for (int f = 0; f < k; ++f) any = (cut[f] = end_cutoff(ends[f], x, y)).w != 0 || any;
-            if (!any) continue;
-            const LocalBasis b = bfs_basis((x - x0) / g.h, (y - y0) / g.h, g.h);
-            const double fxy = load ? (*load)(x, y) : 0.0;
-            for (int f = 0; f < k; ++f) {
-              const EndValue v = cut[f].w == 0 ? EndValue{} : end_function_in_cell(ends[f], fields[f], cut[f], interpolants[f], b, x, y);
-              lap[f] = v.lap;
-              out.load[f] += wq * fxy * v.w;
-            }
-            for (int i = 0; i < 16; ++i)
-              if (dofs[i] >= 0)
-                for (int f = 0; f < k; ++f) out.border(dofs[i], f) += wq * (b.dxx[i] + b.dyy[i]) * lap[f];
-            for (int f = 0; f < k; ++f)
-              for (int l = 0; l < k; ++l) out.own(f, l) += wq * lap[f] * lap[l];
-            if (others == 0) continue;
-            laplacians(ex, ey, x, y, olap);
-            for (int j = 0; j < others; ++j)
-              if (olap[j] != 0)
-                for (int f = 0; f < k; ++f) out.cross(j, f) += wq * olap[j] * lap[f];
-          }
+        // Each side of every curve across which the integrand kinks, taken apart where the curves
+        // cut the square (implicit_quadrature.hpp); the square whole where none does.
+        const std::vector<Bicubic> cutting = cutting_curves(ends, sx, sy, size);
+        if (cutting.empty()) {
+          for (size_t i = 0; i < q.points.size(); ++i)
+            for (size_t j = 0; j < q.points.size(); ++j)
+              add_point(sx + size * q.points[i], sy + size * q.points[j], size * size * q.weights[i] * q.weights[j]);
+          return;
+        }
+        for (unsigned sides = 0; sides < (1u << cutting.size()); ++sides) {
+          std::vector<Bicubic> psi = cutting;
+          for (size_t c = 0; c < cutting.size(); ++c)
+            if ((sides >> c) & 1)
+              for (double& v : psi[c].b) v = -v;
+          pts.clear();
+          implicit_rule(sx, sy, size, size, psi, ImplicitOrders{kEndGaussPoints, kEndGaussPoints + 2}, pts);
+          for (const WeightedPoint& p : pts) add_point(p.x, p.y, p.weight);
+        }
       };
       square(square, x0, y0, g.h, 0);
     }

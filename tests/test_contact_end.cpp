@@ -190,6 +190,61 @@ TEST(ContactEnd, TheBlocksAreSymmetricPositiveAndLocal) {
   EXPECT_EQ(far, 0);
 }
 
+// The blocks against a rule that knows nothing of the rim or the cut-off: 6 x 6 Gauss points on
+// s x s sub-squares of every cell (those near the end halved towards it, where Lap F_32 grows like
+// rho^(-1/2)), the functions read point by point (end_function). Its own error, estimated from
+// s = 16 to 32, bounds how far the border and the load may lie from it; the own block, whose
+// integrand grows like 1 / rho, is left out. Halving each cell towards the rim instead of cutting
+// along the curves left the border 2e-4 off, and fails this.
+TEST(ContactEnd, TheBlocksMatchARuleBlindToTheCurves) {
+  const ContactEnd e = scene_end();
+  const Grid g = make_grid(32, 1.0, 0.5);
+  const std::function<double(double, double)> f = [](double x, double y) { return 1 + x * y; };
+  const std::vector<EndField> fields{EndField::Gap32, EndField::Gap52};
+  const EndBlocks b = assemble_end_blocks(g, {e, e}, fields, 0, {}, &f);
+  const Quadrature1D q = gauss_legendre(6);
+  auto blind = [&](int s, Eigen::MatrixXd& border, Eigen::VectorXd& load) {
+    border = Eigen::MatrixXd::Zero(g.unknowns(), 2), load = Eigen::VectorXd::Zero(2);
+    for (int ey = 0; ey < g.ny; ++ey)
+      for (int ex = 0; ex < g.nx; ++ex) {
+        if (std::hypot((ex + 0.5) * g.h - end_x(e), (ey + 0.5) * g.h - end_y(e)) > e.outer * 1.2 + g.h) continue;
+        const auto dofs = g.element_dofs(ex, ey);
+        auto square = [&](auto&& self, double t0, double u0, double size, int depth) -> void {
+          const double dx = std::max({ex * g.h + t0 * g.h - end_x(e), 0.0, end_x(e) - (ex + t0 + size) * g.h});
+          const double dy = std::max({ey * g.h + u0 * g.h - end_y(e), 0.0, end_y(e) - (ey + u0 + size) * g.h});
+          if (depth < 24 && std::hypot(dx, dy) < size * g.h) {
+            for (int c = 0; c < 4; ++c) self(self, t0 + (c & 1) * size / 2, u0 + (c >> 1) * size / 2, size / 2, depth + 1);
+            return;
+          }
+          for (size_t i = 0; i < q.points.size(); ++i)
+            for (size_t j = 0; j < q.points.size(); ++j) {
+              const double t = t0 + size * q.points[i], u = u0 + size * q.points[j];
+              const double x = (ex + t) * g.h, y = (ey + u) * g.h, wt = q.weights[i] * q.weights[j] * size * size * g.h * g.h;
+              const LocalBasis lb = bfs_basis(t, u, g.h);
+              for (int k = 0; k < 2; ++k) {
+                const EndValue v = end_function(e, fields[k], g, x, y);
+                load[k] += wt * f(x, y) * v.w;
+                for (int d = 0; d < 16; ++d)
+                  if (dofs[d] >= 0) border(dofs[d], k) += wt * (lb.dxx[d] + lb.dyy[d]) * v.lap;
+              }
+            }
+        };
+        for (int sy = 0; sy < s; ++sy)
+          for (int sx = 0; sx < s; ++sx) square(square, static_cast<double>(sx) / s, static_cast<double>(sy) / s, 1.0 / s, 0);
+      }
+  };
+  Eigen::MatrixXd coarse, fine;
+  Eigen::VectorXd l_coarse, l_fine;
+  blind(16, coarse, l_coarse);
+  blind(32, fine, l_fine);
+  for (int k = 0; k < 2; ++k) {
+    const double size = fine.col(k).lpNorm<Eigen::Infinity>(), own_error = (fine.col(k) - coarse.col(k)).lpNorm<Eigen::Infinity>();
+    EXPECT_LT(own_error, 1e-4 * size);  // the blind rule is good enough to judge by
+    EXPECT_LE((b.border.col(k) - fine.col(k)).lpNorm<Eigen::Infinity>(), 2 * own_error + 1e-12 * size) << "field " << k;
+    EXPECT_LE(std::abs(b.load[k] - l_fine[k]), 2 * std::abs(l_fine[k] - l_coarse[k]) + 1e-12 * std::abs(l_fine[k])) << "field " << k;
+  }
+}
+
 // The cross block with other functions of the space: given, as those, three of the grid's own basis
 // functions (their Laplacians read off the cell's basis), it must give their rows of the border.
 TEST(ContactEnd, TheCrossBlockOfOtherFunctionsMatchesTheBorderForGridFunctions) {
