@@ -180,13 +180,15 @@ Bicubic circle_on(const ContactEnd& e, double sx, double sy, double size, bool o
 }
 // rho^2 - c^2 on the same square, rho^2 = t^2 + nu^2 of the end's fitted coordinates: its bicubic
 // Hermite interpolant from the corners, which follows the curve rho = c to the interpolant's order
-// (a cut-off's edge is smooth, and a square spans at most a cell of it).
+// (the edge is a smooth curve and a square is at most a cell across, so the two stay close).
 Bicubic cutoff_circle_on(const ContactEnd& e, double c, double sx, double sy, double size) {
   std::array<CornerJet, 4> jets;
   for (int k = 0; k < 4; ++k) {
     const double x = sx + (k & 1) * size, y = sy + (k >> 1) * size, X = x - e.cx, Y = y - e.cy;
     const double r2 = X * X + Y * Y, r = std::sqrt(r2), sa = e.sigma * e.a;
-    if (!(r2 > 0)) return Bicubic{{1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1}};  // the fitted coordinates end at the centre: taken as uncut
+    // The fitted coordinates end at the centre; a square there has rho >= a - sqrt(2) h, beyond
+    // every cut-off edge while outer < a - sqrt(2) h, so it is taken as uncut.
+    if (!(r2 > 0)) return Bicubic{{1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1}};
     const double t = e.a * std::remainder(std::atan2(Y, X) - e.theta, 2 * M_PI) * e.sigma, nu = r - e.a;
     const double tx = -sa * Y / r2, ty = sa * X / r2, txy = sa * (Y * Y - X * X) / (r2 * r2);
     const double nx = X / r, ny = Y / r, nxy = -X * Y / (r2 * r);
@@ -196,9 +198,9 @@ Bicubic cutoff_circle_on(const ContactEnd& e, double c, double sx, double sy, do
   return bicubic_from_corners(jets, size, size);
 }
 
-// The curves that cut the square across which the blocks' integrand is not smooth: each rim (the
-// end's functions kink across its contact side, (D31)'s across all of it) and the edges of each
-// end's cut-off, where it is only C^3; each once.
+// The curves that cut the square across which the ends' functions are not smooth: each rim (their
+// Laplacians kink across its contact side; (D31)'s across all of it) and the edges of each end's
+// cut-off, where it is only C^3; each once.
 std::vector<Bicubic> cutting_curves(const std::vector<ContactEnd>& ends, double sx, double sy, double size) {
   std::vector<Bicubic> out;
   for (size_t f = 0; f < ends.size(); ++f) {

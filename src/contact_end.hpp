@@ -79,15 +79,18 @@ double end_shift(const std::vector<double>& s, const std::vector<double>& gap);
 // g: border(i, k) = (Lap phi_i, Lap psi_k) over the grid's unknowns i, own(k, l) = (Lap psi_k,
 // Lap psi_l). Each cell near an end is cut into squares, halved towards the end (its second
 // derivatives are singular there), with kEndGaussPoints^2 Gauss points on each. Where a curve
-// across which the integrand is not smooth cuts a square (the rim, where the functions kink, and the
-// edges rho = inner, outer of each end's cut-off, which is only C^3 there), each side of it is
-// integrated apart (implicit_rule): halving towards the rim instead left the blocks 2e-4 off.
+// across which the ends' functions are not smooth cuts a square (the rim, across which their
+// Laplacians kink on the contact side, and the edges rho = inner, outer of each end's cut-off,
+// which is only C^3 there), each side of it is integrated apart (implicit_rule): halving towards
+// the rim instead left the border 2e-4 off on the 2 x 1 plate's quarter at n = 64. The kinks of
+// `others` (those of (D31)'s cut-off and knots) are not followed, so `cross` is integrated across
+// them as a Gauss rule would be.
 // `others` more functions of the space (another enrichment's, D31's) get cross(j, k) = (Lap o_j,
 // Lap psi_k), with their Laplacians at (x, y) in cell (ex, ey) from `laplacians`; a `load` f gives
 // load(k) = (f, psi_k).
 // Gauss points each way on a square (and along the lines of implicit_rule, with two more across):
-// with 8 the blocks on the 2 x 1 plate's quarter (n = 64, 128) lie within 1e-7 of those with 14
-// (tests/test_contact_end.cpp holds them to a rule blind to the curves).
+// with 8, the border and own blocks on that quarter (n = 64, 128) lie within 1.2e-7 of those with 14
+// (measured apart; tests/test_contact_end.cpp holds the border and load to a rule blind to the curves).
 constexpr int kEndGaussPoints = 8;
 struct EndBlocks {
   Eigen::MatrixXd border, own, cross;
