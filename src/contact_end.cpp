@@ -168,14 +168,21 @@ double end_shift(const std::vector<double>& s, const std::vector<double>& gap) {
 }
 
 namespace {
-// The circle (x - cx)^2 + (y - cy)^2 - a^2 on the square [sx, sx + size] x [sy, sy + size], negated
-// for its outside: biquadratic, so the bicubic is the circle itself.
-Bicubic circle_on(const ContactEnd& e, double sx, double sy, double size, bool outside) {
+// The circle (x - cx)^2 + (y - cy)^2 - a^2 on the square [sx, sx + size] x [sy, sy + size]:
+// biquadratic, so the bicubic is the circle itself.
+Bicubic circle_on(double cx, double cy, double a, double sx, double sy, double size) {
   std::array<CornerJet, 4> c;
   for (int k = 0; k < 4; ++k) {
-    const double x = sx + (k & 1) * size - e.cx, y = sy + (k >> 1) * size - e.cy, s = outside ? -1 : 1;
-    c[k] = {s * (x * x + y * y - e.a * e.a), s * 2 * x, s * 2 * y, 0};
+    const double x = sx + (k & 1) * size - cx, y = sy + (k >> 1) * size - cy;
+    c[k] = {x * x + y * y - a * a, 2 * x, 2 * y, 0};
   }
+  return bicubic_from_corners(c, size, size);
+}
+// The line through (cx, cy) at angle theta, linear and so exact.
+Bicubic line_on(double cx, double cy, double theta, double sx, double sy, double size) {
+  std::array<CornerJet, 4> c;
+  const double nx = -std::sin(theta), ny = std::cos(theta);
+  for (int k = 0; k < 4; ++k) c[k] = {nx * (sx + (k & 1) * size - cx) + ny * (sy + (k >> 1) * size - cy), nx, ny, 0};
   return bicubic_from_corners(c, size, size);
 }
 // rho^2 - c^2 on the same square, rho^2 = t^2 + nu^2 of the end's fitted coordinates: its bicubic
@@ -200,9 +207,16 @@ Bicubic cutoff_circle_on(const ContactEnd& e, double c, double sx, double sy, do
 
 // The curves that cut the square across which the ends' functions are not smooth: each rim (their
 // Laplacians kink across its contact side; (D31)'s across all of it) and the edges of each end's
-// cut-off, where it is only C^3; each once.
-std::vector<Bicubic> cutting_curves(const std::vector<ContactEnd>& ends, double sx, double sy, double size) {
+// cut-off, where it is only C^3; each once; and those of the other functions, `kinks`.
+std::vector<Bicubic> cutting_curves(const std::vector<ContactEnd>& ends, const OtherKinks* kinks, double sx, double sy, double size) {
   std::vector<Bicubic> out;
+  auto add = [&](const Bicubic& b) {
+    if (b.sign() == 0) out.push_back(b);
+  };
+  if (kinks) {
+    for (double r : kinks->radii) add(circle_on(kinks->cx, kinks->cy, r, sx, sy, size));
+    for (double t : kinks->rays) add(line_on(kinks->cx, kinks->cy, t, sx, sy, size));
+  }
   for (size_t f = 0; f < ends.size(); ++f) {
     const ContactEnd& e = ends[f];
     const auto same = [&](bool end) {
@@ -213,18 +227,17 @@ std::vector<Bicubic> cutting_curves(const std::vector<ContactEnd>& ends, double 
       }
       return false;
     };
-    if (!same(false))
-      if (Bicubic b = circle_on(e, sx, sy, size, false); b.sign() == 0) out.push_back(b);
+    if (!same(false)) add(circle_on(e.cx, e.cy, e.a, sx, sy, size));
     if (!same(true))
-      for (double c : {e.inner, e.outer})
-        if (Bicubic b = cutoff_circle_on(e, c, sx, sy, size); b.sign() == 0) out.push_back(b);
+      for (double c : {e.inner, e.outer}) add(cutoff_circle_on(e, c, sx, sy, size));
   }
   return out;
 }
 }  // namespace
 
 EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends, const std::vector<EndField>& fields,
-                              int others, const OtherLaplacians& laplacians, const std::function<double(double, double)>* load) {
+                              int others, const OtherLaplacians& laplacians, const std::function<double(double, double)>* load,
+                              const OtherKinks* kinks) {
   if (ends.size() != fields.size()) throw std::invalid_argument("assemble_end_blocks: one field per end");
   if (others > 0 && !laplacians) throw std::invalid_argument("assemble_end_blocks: other functions without their Laplacians");
   const int k = static_cast<int>(ends.size()), N = g.unknowns();
@@ -285,7 +298,7 @@ EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends
         }
         // Each side of every curve across which the integrand kinks, taken apart where the curves
         // cut the square (implicit_quadrature.hpp); the square whole where none does.
-        const std::vector<Bicubic> cutting = cutting_curves(ends, sx, sy, size);
+        const std::vector<Bicubic> cutting = cutting_curves(ends, kinks, sx, sy, size);
         if (cutting.empty()) {
           for (size_t i = 0; i < q.points.size(); ++i)
             for (size_t j = 0; j < q.points.size(); ++j)

@@ -83,8 +83,8 @@ double end_shift(const std::vector<double>& s, const std::vector<double>& gap);
 // Laplacians kink on the contact side, and the edges rho = inner, outer of each end's cut-off,
 // which is only C^3 there), each side of it is integrated apart (implicit_rule): halving towards
 // the rim instead left the border 2e-4 off on the 2 x 1 plate's quarter at n = 64. The kinks of
-// `others` (those of (D31)'s cut-off and knots) are not followed, so `cross` is integrated across
-// them as a Gauss rule would be.
+// `others` are followed too where `kinks` gives them; otherwise `cross` is integrated across them
+// as a Gauss rule would be.
 // `others` more functions of the space (another enrichment's, D31's) get cross(j, k) = (Lap o_j,
 // Lap psi_k), with their Laplacians at (x, y) in cell (ex, ey) from `laplacians`; a `load` f gives
 // load(k) = (f, psi_k).
@@ -97,8 +97,14 @@ struct EndBlocks {
   Eigen::VectorXd load;
 };
 using OtherLaplacians = std::function<void(int ex, int ey, double x, double y, Eigen::VectorXd& out)>;
+// Where the Laplacians of `others` kink: circles about (cx, cy) and lines through it at the given
+// angles ((D31)'s cut-off's edges and knot rays), followed like the ends' own curves.
+struct OtherKinks {
+  double cx = 0, cy = 0;
+  std::vector<double> radii, rays;
+};
 EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends, const std::vector<EndField>& fields,
                               int others = 0, const OtherLaplacians& laplacians = {},
-                              const std::function<double(double, double)>* load = nullptr);
+                              const std::function<double(double, double)>* load = nullptr, const OtherKinks* kinks = nullptr);
 
 }  // namespace plate

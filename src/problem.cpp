@@ -257,7 +257,18 @@ void attach_ends(Problem& p, const std::vector<ContactEnd>& ends, const std::vec
     }
   }
   const int N = g.unknowns(), Kk = p.kink_size(), base = N + Kk, k = static_cast<int>(ends.size());
-  const EndBlocks b = assemble_end_blocks(g, ends, fields, Kk, kink_laplacians(p), &p.scene.load);
+  // (D31)'s Laplacians kink at its cut-off's edges and along the rays of its knots: the cross block
+  // follows them (each ray's line once, for a knot and the one opposite).
+  OtherKinks kinks;
+  if (p.kink) {
+    const KinkEnrichment& e = *p.kink;
+    kinks = {e.cx, e.cy, {e.a + e.inner, e.a + e.outer}, {}};
+    for (int j = 0; j < e.knots; ++j) {
+      const double t = std::fmod(2 * M_PI * j / e.knots, M_PI);
+      if (std::none_of(kinks.rays.begin(), kinks.rays.end(), [&](double u) { return std::abs(u - t) < 1e-12; })) kinks.rays.push_back(t);
+    }
+  }
+  const EndBlocks b = assemble_end_blocks(g, ends, fields, Kk, kink_laplacians(p), &p.scene.load, p.kink ? &kinks : nullptr);
   std::vector<Eigen::Triplet<double>> t;
   for (int f = 0; f < k; ++f) {
     for (int i = 0; i < N; ++i)
