@@ -238,6 +238,15 @@ OtherLaplacians kink_laplacians(const Problem& p) {
 }
 }  // namespace
 
+OtherKinks kink_curves(const KinkEnrichment& e) {
+  OtherKinks k{e.cx, e.cy, {e.a + e.inner, e.a + e.outer}, {}};
+  for (int j = 0; j < e.knots; ++j) {
+    const double t = std::fmod(2 * M_PI * j / e.knots, M_PI);
+    if (std::none_of(k.rays.begin(), k.rays.end(), [&](double u) { return std::abs(u - t) < 1e-12; })) k.rays.push_back(t);
+  }
+  return k;
+}
+
 void attach_ends(Problem& p, const std::vector<ContactEnd>& ends, const std::vector<EndField>& fields) {
   if (!p.ends.empty()) throw std::logic_error("attach_ends: the problem has its ends' functions already");
   if (ends.size() != fields.size()) throw std::logic_error("attach_ends: one field per end");
@@ -257,17 +266,7 @@ void attach_ends(Problem& p, const std::vector<ContactEnd>& ends, const std::vec
     }
   }
   const int N = g.unknowns(), Kk = p.kink_size(), base = N + Kk, k = static_cast<int>(ends.size());
-  // (D31)'s Laplacians kink at its cut-off's edges and along the rays of its knots: the cross block
-  // follows them (each ray's line once, for a knot and the one opposite).
-  OtherKinks kinks;
-  if (p.kink) {
-    const KinkEnrichment& e = *p.kink;
-    kinks = {e.cx, e.cy, {e.a + e.inner, e.a + e.outer}, {}};
-    for (int j = 0; j < e.knots; ++j) {
-      const double t = std::fmod(2 * M_PI * j / e.knots, M_PI);
-      if (std::none_of(kinks.rays.begin(), kinks.rays.end(), [&](double u) { return std::abs(u - t) < 1e-12; })) kinks.rays.push_back(t);
-    }
-  }
+  const OtherKinks kinks = p.kink ? kink_curves(*p.kink) : OtherKinks{};
   const EndBlocks b = assemble_end_blocks(g, ends, fields, Kk, kink_laplacians(p), &p.scene.load, p.kink ? &kinks : nullptr);
   std::vector<Eigen::Triplet<double>> t;
   for (int f = 0; f < k; ++f) {

@@ -83,6 +83,9 @@ void attach_kink(Problem& p, const KinkEnrichment& e);
 // out for the contact only; throws std::invalid_argument where an end's cut-off reaches a clamped
 // edge or a mirror line (its images would be other functions), and std::logic_error if p has ends.
 void attach_ends(Problem& p, const std::vector<ContactEnd>& ends, const std::vector<EndField>& fields);
+// Where (D31)'s Laplacians kink, for the ends' cross block to follow: its cut-off's edges and the
+// rays of its knots (each line once, for a knot and the one opposite).
+OtherKinks kink_curves(const KinkEnrichment& e);
 
 // The rows on p's circle laid out anew for a contact (rim_rows.hpp, D28): the sampling and the
 // obstacle at its samples remade; K and F kept; M remade.

@@ -431,7 +431,8 @@ TEST(ContactEnd, TheCrossBlockWithTheKinksFunctionsMissesNone) {
       out[j] = v.wxx + v.wyy;
     }
   };
-  const EndBlocks full = assemble_end_blocks(g, {e}, {EndField::Gap52}, Kk, every);
+  const OtherKinks kinks = kink_curves(*p.kink);  // the same rule as attach_ends
+  const EndBlocks full = assemble_end_blocks(g, {e}, {EndField::Gap52}, Kk, every, &p.scene.load, &kinks);
   attach_ends(p, {e}, {EndField::Gap52});
   int nonzero = 0;
   for (int j = 0; j < Kk; ++j) {
