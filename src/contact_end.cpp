@@ -205,10 +205,27 @@ Bicubic cutoff_circle_on(const ContactEnd& e, double c, double sx, double sy, do
   return bicubic_from_corners(jets, size, size);
 }
 
-// The curves that cut the square across which the ends' functions are not smooth: each rim (their
-// Laplacians kink across its contact side; (D31)'s across all of it) and the edges of each end's
-// cut-off, where it is only C^3; each once; and those of the other functions, `kinks`.
-std::vector<Bicubic> cutting_curves(const std::vector<ContactEnd>& ends, const OtherKinks* kinks, double sx, double sy, double size) {
+// The curves across which the ends' functions are not smooth: each rim (their Laplacians kink
+// across its contact side; (D31)'s across all of it) and the edges of each end's cut-off, where it
+// is only C^3; each once, though an end appears once per field.
+struct EndCurves {
+  std::vector<ContactEnd> rims, centres;
+};
+EndCurves end_curves(const std::vector<ContactEnd>& ends) {
+  EndCurves c;
+  for (const ContactEnd& e : ends) {
+    auto on_rim = [&](const ContactEnd& o) { return o.cx == e.cx && o.cy == e.cy && o.a == e.a; };
+    if (std::none_of(c.rims.begin(), c.rims.end(), on_rim)) c.rims.push_back(e);
+    if (std::none_of(c.centres.begin(), c.centres.end(), [&](const ContactEnd& o) {
+          return on_rim(o) && o.theta == e.theta && o.inner == e.inner && o.outer == e.outer;
+        }))
+      c.centres.push_back(e);
+  }
+  return c;
+}
+
+// Those of `curves`, and of the other functions' `kinks`, that cut the square.
+std::vector<Bicubic> cutting_curves(const EndCurves& curves, const OtherKinks* kinks, double sx, double sy, double size) {
   std::vector<Bicubic> out;
   auto add = [&](const Bicubic& b) {
     if (b.sign() == 0) out.push_back(b);
@@ -217,20 +234,9 @@ std::vector<Bicubic> cutting_curves(const std::vector<ContactEnd>& ends, const O
     for (double r : kinks->radii) add(circle_on(kinks->cx, kinks->cy, r, sx, sy, size));
     for (double t : kinks->rays) add(line_on(kinks->cx, kinks->cy, t, sx, sy, size));
   }
-  for (size_t f = 0; f < ends.size(); ++f) {
-    const ContactEnd& e = ends[f];
-    const auto same = [&](bool end) {
-      for (size_t g = 0; g < f; ++g) {
-        const ContactEnd& o = ends[g];
-        if (o.cx == e.cx && o.cy == e.cy && o.a == e.a && (!end || (o.theta == e.theta && o.inner == e.inner && o.outer == e.outer)))
-          return true;
-      }
-      return false;
-    };
-    if (!same(false)) add(circle_on(e.cx, e.cy, e.a, sx, sy, size));
-    if (!same(true))
-      for (double c : {e.inner, e.outer}) add(cutoff_circle_on(e, c, sx, sy, size));
-  }
+  for (const ContactEnd& e : curves.rims) add(circle_on(e.cx, e.cy, e.a, sx, sy, size));
+  for (const ContactEnd& e : curves.centres)
+    for (double c : {e.inner, e.outer}) add(cutoff_circle_on(e, c, sx, sy, size));
   return out;
 }
 }  // namespace
@@ -257,6 +263,7 @@ EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends
   std::vector<EndDerivatives> cut(k);
   std::vector<std::array<double, 16>> interpolants(k);
   std::vector<WeightedPoint> pts;
+  const EndCurves curves = end_curves(ends);
   for (int ey = 0; ey < g.ny; ++ey)
     for (int ex = 0; ex < g.nx; ++ex) {
       const double x0 = ex * g.h, y0 = ey * g.h;
@@ -298,7 +305,7 @@ EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends
         }
         // Each side of every curve across which the integrand kinks, taken apart where the curves
         // cut the square (implicit_quadrature.hpp); the square whole where none does.
-        const std::vector<Bicubic> cutting = cutting_curves(ends, kinks, sx, sy, size);
+        const std::vector<Bicubic> cutting = cutting_curves(curves, kinks, sx, sy, size);
         if (cutting.empty()) {
           for (size_t i = 0; i < q.points.size(); ++i)
             for (size_t j = 0; j < q.points.size(); ++j)
