@@ -38,8 +38,12 @@ constexpr double kKinkMinRadiusCells = 2;
 // than kKinkKnotCellsMin cells.
 constexpr double kKinkKnotCells = 4, kKinkKnotCellsMin = 2;
 constexpr int kKinkKnotsAtLeast = 32;
-// Gauss points each way of the polar rule of the blocks.
-constexpr int kKinkGaussPoints = 8;
+// Gauss points of the polar rule of the blocks on each part of a ray: inside the rim, from the rim
+// to the cut-off's start, and across the cut-off (kink_enrichment.cpp says why these counts).
+struct KinkRulePoints {
+  int angle, radius;
+};
+constexpr KinkRulePoints kKinkRule[3] = {{6, 5}, {6, 6}, {8, 8}};
 
 // How the space is widened: not at all, or with (D31) on the scene's circle.
 struct EnrichSpec {

@@ -508,7 +508,11 @@ void model_numbers(Numbers& num) {
   num.put("model.largest_order", fmt("%g", kLargestOrder), "src/error_bar.hpp kLargestOrder");
   num.put("model.kink_knot_cells_min", fmt("%g", kKinkKnotCellsMin), "src/kink_enrichment.hpp kKinkKnotCellsMin");
   num.put("model.kink_knots_at_least", count(kKinkKnotsAtLeast), "src/kink_enrichment.hpp kKinkKnotsAtLeast");
-  num.put("model.kink_gauss_points", count(kKinkGaussPoints), "src/kink_enrichment.hpp kKinkGaussPoints");
+  const char* part[3] = {"inside", "middle", "cutoff"};
+  for (int k = 0; k < 3; ++k) {
+    num.put(std::string("model.kink_rule_") + part[k] + "_angle", count(kKinkRule[k].angle), "src/kink_enrichment.hpp kKinkRule");
+    num.put(std::string("model.kink_rule_") + part[k] + "_radius", count(kKinkRule[k].radius), "src/kink_enrichment.hpp kKinkRule");
+  }
   num.put("model.refine_largest_first", fmt("%g", kRefineLargestFirst), "src/refinement.hpp kRefineLargestFirst");
   num.put("model.refine_contraction", fmt("%g", kRefineContraction), "src/refinement.hpp kRefineContraction");
 }
