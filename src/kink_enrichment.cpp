@@ -319,8 +319,8 @@ KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const Sp
   const double h = g.h, spacing = 2 * M_PI / e.knots, radii[3] = {e.a, e.a + e.inner, e.a + e.outer};
   // The rule on each part of a ray (kKinkRule). Inside the rim psi_k is the bicubic -I_h F_k, so
   // along a ray both Laplacians and the factor r make a polynomial of degree 9 in r, which 5 points
-  // integrate exactly. Out to the cut-off's start F_k is a quartic in d over powers of r, nearly as
-  // tame: 6 points. Across the cut-off the quintic chi enters each Laplacian, and 8 points leave
+  // integrate exactly. Out to the cut-off's start F_k is a quartic in d whose Laplacian divides by
+  // powers of r, nearly as tame: 6 points. Across the cut-off the quintic chi enters each Laplacian, and 8 points leave
   // (Lap psi_k, Lap psi_l) 2e-8 off a 16-point rule on the paper's scene at n = 64 (6 leave 1e-4).
   // In the angle a ray's ends move with it, which matters most across the cut-off's high powers of
   // r: 6 points there leave that block 3e-6 off, 8 do not; on the two inner parts 6 points leave the
@@ -374,8 +374,10 @@ KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const Sp
                 for (int s = 0; s < ray.sp.count; ++s) ray.idx[s] = cb.local(e.function_of_spline[ray.sp.j[s]]);
                 ray_made = true;
               }
-              for (size_t k = 0; k < qr[part].points.size(); ++k)
-                cb.add(lo + (hi - lo) * qr[part].points[k], (t1 - t0) * qa[first].weights[i] * (hi - lo) * qr[part].weights[k] * (lo + (hi - lo) * qr[part].points[k]));
+              for (size_t k = 0; k < qr[part].points.size(); ++k) {
+                const double r = lo + (hi - lo) * qr[part].points[k];
+                cb.add(r, (t1 - t0) * qa[first].weights[i] * (hi - lo) * qr[part].weights[k] * r);
+              }
             }
           }
         }
