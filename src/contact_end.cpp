@@ -168,16 +168,6 @@ double end_shift(const std::vector<double>& s, const std::vector<double>& gap) {
 }
 
 namespace {
-// The circle (x - cx)^2 + (y - cy)^2 - a^2 on the square [sx, sx + size] x [sy, sy + size]:
-// biquadratic, so the bicubic is the circle itself.
-Bicubic circle_on(double cx, double cy, double a, double sx, double sy, double size) {
-  std::array<CornerJet, 4> c;
-  for (int k = 0; k < 4; ++k) {
-    const double x = sx + (k & 1) * size - cx, y = sy + (k >> 1) * size - cy;
-    c[k] = {x * x + y * y - a * a, 2 * x, 2 * y, 0};
-  }
-  return bicubic_from_corners(c, size, size);
-}
 // The line through (cx, cy) at angle theta, linear and so exact.
 Bicubic line_on(double cx, double cy, double theta, double sx, double sy, double size) {
   std::array<CornerJet, 4> c;

@@ -293,6 +293,15 @@ Bicubic bicubic_from_corners(const std::array<CornerJet, 4>& corners, double hx,
     }
   return p;
 }
+
+Bicubic circle_on(double cx, double cy, double r, double x0, double y0, double size) {
+  std::array<CornerJet, 4> c;
+  for (int k = 0; k < 4; ++k) {
+    const double x = x0 + (k & 1) * size - cx, y = y0 + (k >> 1) * size - cy;
+    c[k] = {x * x + y * y - r * r, 2 * x, 2 * y, 0};
+  }
+  return bicubic_from_corners(c, size, size);
+}
 // @end bicubic-from-corners
 
 void implicit_rule(double x0, double y0, double hx, double hy, const std::vector<Bicubic>& psi, ImplicitOrders orders,

@@ -37,6 +37,9 @@ struct CornerJet {
   double f = 0, fx = 0, fy = 0, fxy = 0;
 };
 Bicubic bicubic_from_corners(const std::array<CornerJet, 4>& corners, double hx, double hy);
+// The circle's level function (x - cx)^2 + (y - cy)^2 - r^2, negative inside, on the square
+// [x0, x0 + size] x [y0, y0 + size]: biquadratic, so this bicubic is the circle exactly.
+Bicubic circle_on(double cx, double cy, double r, double x0, double y0, double size);
 
 struct WeightedPoint {
   double x = 0, y = 0, weight = 0;

@@ -31,15 +31,6 @@ Bicubic field_on(const Grid& g, const std::array<int, 16>& dofs, const VectorXd&
   return bicubic_from_corners(c, g.h, g.h);
 }
 
-Bicubic circle_on(const Cylinder& d, double x0, double y0, double h) {
-  std::array<CornerJet, 4> c;
-  for (int a = 0; a < 4; ++a) {
-    const double x = x0 + (a & 1) * h - d.cx, y = y0 + (a >> 1) * h - d.cy;
-    c[a] = {x * x + y * y - d.radius * d.radius, 2 * x, 2 * y, 0};
-  }
-  return bicubic_from_corners(c, h, h);
-}
-
 // Calls f with each square's unknowns and the points of its part of the region.
 void for_each_square(const Problem& p, const VectorXd* w, ImplicitOrders orders,
                      const std::function<void(const std::array<int, 16>&, double, double, const std::vector<WeightedPoint>&)>& f) {
@@ -53,7 +44,7 @@ void for_each_square(const Problem& p, const VectorXd* w, ImplicitOrders orders,
       const double nx = std::clamp(d.cx, x0, x0 + g.h) - d.cx, ny = std::clamp(d.cy, y0, y0 + g.h) - d.cy;
       if (nx * nx + ny * ny > d.radius * d.radius) continue;
       const std::array<int, 16> dofs = g.element_dofs(ex, ey);
-      std::vector<Bicubic> psi{circle_on(d, x0, y0, g.h)};
+      std::vector<Bicubic> psi{circle_on(d.cx, d.cy, d.radius, x0, y0, g.h)};
       if (w) psi.push_back(field_on(g, dofs, *w, d.height));
       pts.clear();
       implicit_rule(x0, y0, g.h, g.h, psi, orders, pts);

@@ -151,6 +151,15 @@ TEST(ImplicitRule, ABoxOutsideGivesNoPointAndABoxInsideTheTensorRule) {
   EXPECT_THROW(implicit_rule(0, 0, 1, 1, {}, {0, 8}, pts), std::invalid_argument);
 }
 
+// The circle's level function is biquadratic, so its bicubic on a square is the function itself,
+// off the square's corners too; checked against the formula at points of an off-centre square.
+TEST(ImplicitRule, TheCirclesBicubicIsItsLevelFunctionExactly) {
+  const double x0 = 0.31, y0 = 0.62, size = 0.07;
+  const Bicubic p = circle_on(cx, cy, r, x0, y0, size);
+  for (double t : {0.0, 0.13, 0.5, 0.91})
+    for (double s : {0.0, 0.37, 0.77, 1.0}) EXPECT_NEAR(p(t, s), circle(x0 + t * size, y0 + s * size).f, 1e-15) << t << " " << s;
+}
+
 }  // namespace
 }  // namespace plate
 
