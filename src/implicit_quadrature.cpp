@@ -51,6 +51,9 @@ bool all_negative(const double* c, int n, int stride) {
 
 void roots_on(const Cubic& c, double a, double b, int depth, std::vector<double>& out) {
   if (all_positive(c.data(), 4, 1) || all_negative(c.data(), 4, 1)) return;
+  // A curve that lies along the line (a ray of (D31) on a grid line, say) makes the cubic vanish
+  // there: it splits nothing, and halving it would go on to the depth limit on every half.
+  if (c[0] == 0 && c[1] == 0 && c[2] == 0 && c[3] == 0) return;
   const Cubic d{c[1] - c[0], c[2] - c[1], c[3] - c[2], 0};
   const bool monotone = all_positive(d.data(), 3, 1) || all_negative(d.data(), 3, 1);
   if (monotone || depth >= 48) {

@@ -441,3 +441,73 @@ TEST(ContactEnd, TheCrossBlockWithTheKinksFunctionsMissesNone) {
   }
   EXPECT_GE(nonzero, 2);
 }
+
+// The cross block of the ends' functions with (D31)'s, (Lap psi_j, Lap E), against the same
+// integral by a tensor rule blind to every curve either function kinks on (the rim, (D31)'s cut-off
+// and knot rays, the end's own cut-off), on s x s sub-squares of each cell, halved again near the
+// end itself: its own error shows from s = 8 to 16, and the assembled block must lie within it.
+TEST(ContactEnd, TheCrossBlockWithTheKinksFunctionsMatchesARuleBlindToTheCurves) {
+  const double theta_e = 0.98;
+  Problem p = quarter_laid_out(32, theta_e, true);
+  ASSERT_TRUE(p.kink.has_value());
+  const Grid& g = p.grid;
+  const int Kk = p.kink->size();
+  const ContactEnd e{g.lx(), g.ly(), 0.25, M_PI + theta_e, -1, 0.05, 0.1};
+  const Eigen::MatrixXd P(p.kink_interp);
+  // Every psi_j's Laplacian at (x, y) in cell (ex, ey), its interpolant read off the cell's basis.
+  const OtherLaplacians every = [&](int ex, int ey, double x, double y, Eigen::VectorXd& out) {
+    const auto dofs = g.element_dofs(ex, ey);
+    const LocalBasis b = bfs_basis((x - ex * g.h) / g.h, (y - ey * g.h) / g.h, g.h);
+    for (int j = 0; j < Kk; ++j) {
+      KinkValue I;
+      for (int i = 0; i < 16; ++i)
+        if (dofs[i] >= 0)
+          I.w += P(dofs[i], j) * b.v[i], I.wx += P(dofs[i], j) * b.dx[i], I.wy += P(dofs[i], j) * b.dy[i],
+              I.wxx += P(dofs[i], j) * b.dxx[i], I.wxy += P(dofs[i], j) * b.dxy[i], I.wyy += P(dofs[i], j) * b.dyy[i];
+      out[j] = [&] {
+        const KinkValue v = kink_field(*p.kink, VectorXd::Unit(Kk, j), I, x, y);
+        return v.wxx + v.wyy;
+      }();
+    }
+  };
+  const OtherKinks kinks = kink_curves(*p.kink);
+  const EndBlocks b = assemble_end_blocks(g, {e}, {EndField::Gap52}, Kk, every, &p.scene.load, &kinks);
+  const Quadrature1D q = gauss_legendre(6);
+  auto blind = [&](int s) {
+    Eigen::VectorXd cross = Eigen::VectorXd::Zero(Kk), lap(Kk);
+    for (int ey = 0; ey < g.ny; ++ey)
+      for (int ex = 0; ex < g.nx; ++ex) {
+        if (std::hypot((ex + 0.5) * g.h - end_x(e), (ey + 0.5) * g.h - end_y(e)) > end_reach(e) + g.h) continue;
+        auto square = [&](auto&& self, double t0, double u0, double size, int depth) -> void {
+          const double dx = std::max({ex * g.h + t0 * g.h - end_x(e), 0.0, end_x(e) - (ex + t0 + size) * g.h});
+          const double dy = std::max({ey * g.h + u0 * g.h - end_y(e), 0.0, end_y(e) - (ey + u0 + size) * g.h});
+          if (depth < 20 && std::hypot(dx, dy) < size * g.h) {
+            for (int c = 0; c < 4; ++c) self(self, t0 + (c & 1) * size / 2, u0 + (c >> 1) * size / 2, size / 2, depth + 1);
+            return;
+          }
+          for (size_t i = 0; i < q.points.size(); ++i)
+            for (size_t k = 0; k < q.points.size(); ++k) {
+              const double t = t0 + size * q.points[i], u = u0 + size * q.points[k];
+              const double x = (ex + t) * g.h, y = (ey + u) * g.h, wt = q.weights[i] * q.weights[k] * size * size * g.h * g.h;
+              const EndValue v = end_function(e, EndField::Gap52, g, x, y);
+              if (v.lap == 0) continue;
+              every(ex, ey, x, y, lap);
+              cross += wt * v.lap * lap;
+            }
+        };
+        for (int sy = 0; sy < s; ++sy)
+          for (int sx = 0; sx < s; ++sx) square(square, static_cast<double>(sx) / s, static_cast<double>(sy) / s, 1.0 / s, 0);
+      }
+    return cross;
+  };
+  const Eigen::VectorXd coarse = blind(8), fine = blind(16);
+  const double size = fine.lpNorm<Eigen::Infinity>(), own = (fine - coarse).lpNorm<Eigen::Infinity>();
+  ASSERT_GT(size, 0);
+  EXPECT_LT(own, 1e-4 * size);  // the blind rule is good enough to judge by
+  int reached = 0;
+  for (int j = 0; j < Kk; ++j) {
+    EXPECT_LE(std::abs(b.cross(j, 0) - fine[j]), 2 * own + 1e-12 * size) << "function " << j;
+    reached += std::abs(fine[j]) > 100 * own;
+  }
+  EXPECT_GE(reached, 2);  // the comparison is not among zeros
+}

@@ -151,6 +151,21 @@ TEST(ImplicitRule, ABoxOutsideGivesNoPointAndABoxInsideTheTensorRule) {
   EXPECT_THROW(implicit_rule(0, 0, 1, 1, {}, {0, 8}, pts), std::invalid_argument);
 }
 
+// A curve along a line the rule halves on (a ray of (D31) along a grid line) vanishes on that line:
+// it splits nothing there, and the rule must not go on halving it (it did, towards 2^48 pieces, and
+// ran out of memory). The region left of x = 1/2, the first halving, in a disk about (1/2, 1/2) is
+// half the disk. Where the line meets the circle's top and bottom no axis makes both monotone, so
+// the rule halves down to its depth limit there and tests points one by one: the area is right to
+// within the boxes left at that depth, 4^-12 each, a few about each of the two crossings.
+TEST(ImplicitRule, ACurveAlongALineOfTheRuleSplitsNothingThere) {
+  std::vector<WeightedPoint> pts;
+  const double a = 0.3;
+  const std::array<CornerJet, 4> line{CornerJet{-0.5, 1, 0, 0}, CornerJet{0.5, 1, 0, 0}, CornerJet{-0.5, 1, 0, 0}, CornerJet{0.5, 1, 0, 0}};
+  implicit_rule(0, 0, 1, 1, {bicubic_from_corners(line, 1, 1), circle_on(0.5, 0.5, a, 0, 0, 1)}, {4, 16}, pts, 12);
+  EXPECT_NEAR(integrate(pts, [](double, double) { return 1.0; }), M_PI * a * a / 2, 2 * 4 * std::pow(4.0, -12));
+  EXPECT_LT(pts.size(), 100000u);
+}
+
 // The circle's level function is biquadratic, so its bicubic on a square is the function itself,
 // off the square's corners too; checked against the formula at points of an off-centre square.
 TEST(ImplicitRule, TheCirclesBicubicIsItsLevelFunctionExactly) {
