@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "bfs_element.hpp"
@@ -236,6 +237,15 @@ EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends
                               const OtherKinks* kinks) {
   if (ends.size() != fields.size()) throw std::invalid_argument("assemble_end_blocks: one field per end");
   if (others > 0 && !laplacians) throw std::invalid_argument("assemble_end_blocks: other functions without their Laplacians");
+  // The cut-off's curves are followed in the fitted coordinates, which end at the circle's centre
+  // (cutoff_circle_on): past a - sqrt(2) h they would be read there and the blocks come out NaN.
+  for (const ContactEnd& e : ends)
+    if (!(e.inner > 0 && e.outer > e.inner && e.outer < e.a - std::sqrt(2.0) * g.h)) {
+      std::ostringstream m;
+      m << "assemble_end_blocks: the end's cut-off (inner " << e.inner << ", outer " << e.outer
+        << ") must have 0 < inner < outer < a - sqrt(2) h = " << e.a - std::sqrt(2.0) * g.h;
+      throw std::invalid_argument(m.str());
+    }
   const int k = static_cast<int>(ends.size()), N = g.unknowns();
   EndBlocks out{Eigen::MatrixXd::Zero(N, k), Eigen::MatrixXd::Zero(k, k), Eigen::MatrixXd::Zero(others, k), Eigen::VectorXd::Zero(k)};
   Eigen::VectorXd olap(others);

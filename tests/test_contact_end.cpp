@@ -511,3 +511,42 @@ TEST(ContactEnd, TheCrossBlockWithTheKinksFunctionsMatchesARuleBlindToTheCurves)
   }
   EXPECT_GE(reached, 2);  // the comparison is not among zeros
 }
+
+// Two distinct ends on one rim, as the whole 2 x 1 plate has them (theta = pi + 0.98 and
+// 2 pi - 0.98, the lower half's two): assembled together, each end's border, load and own entry
+// are those it gets alone, since every integral of one end's function is that end's own. Where
+// the two cut-offs are far apart the coupling (Lap E_1, Lap E_2) is zero; brought within reach
+// of each other it is not, and the own block stays symmetric and positive definite.
+TEST(ContactEnd, TwoDistinctEndsOnOneRimAssembleAsEachAlone) {
+  const Grid g = make_grid(64, 2.0, 1.0);
+  const std::function<double(double, double)> f = [](double x, double y) { return 1 + x * y; };
+  const ContactEnd left{1, 0.5, 0.25, M_PI + 0.98, -1, 0.04, 0.08}, right{1, 0.5, 0.25, 2 * M_PI - 0.98, +1, 0.04, 0.08};
+  const EndBlocks both = assemble_end_blocks(g, {left, right}, {EndField::Gap52, EndField::Gap52}, 0, {}, &f);
+  const EndBlocks l = assemble_end_blocks(g, {left}, {EndField::Gap52}, 0, {}, &f);
+  const EndBlocks r = assemble_end_blocks(g, {right}, {EndField::Gap52}, 0, {}, &f);
+  const double scale = both.border.cwiseAbs().maxCoeff();
+  ASSERT_GT(scale, 0);
+  EXPECT_LE((both.border.col(0) - l.border.col(0)).lpNorm<Eigen::Infinity>(), 1e-13 * scale);
+  EXPECT_LE((both.border.col(1) - r.border.col(0)).lpNorm<Eigen::Infinity>(), 1e-13 * scale);
+  EXPECT_NEAR(both.load[0], l.load[0], 1e-13 * std::abs(l.load[0]));
+  EXPECT_NEAR(both.load[1], r.load[0], 1e-13 * std::abs(r.load[0]));
+  EXPECT_NEAR(both.own(0, 0), l.own(0, 0), 1e-13 * l.own(0, 0));
+  EXPECT_NEAR(both.own(1, 1), r.own(0, 0), 1e-13 * r.own(0, 0));
+  // The ends lie 2 a cos(0.98) = 0.28 apart and each reaches about 0.08: no overlap.
+  ASSERT_GT(std::hypot(end_x(left) - end_x(right), end_y(left) - end_y(right)), 2 * end_reach(left) + 2 * g.h);
+  EXPECT_EQ(both.own(0, 1), 0);
+  EXPECT_EQ(both.own(1, 0), 0);
+  // Wider cut-offs that overlap: a coupling, symmetric, and the block still positive definite.
+  ContactEnd wl = left, wr = right;
+  wl.inner = wr.inner = 0.08, wl.outer = wr.outer = 0.16;
+  const EndBlocks wide = assemble_end_blocks(g, {wl, wr}, {EndField::Gap52, EndField::Gap52});
+  EXPECT_NE(wide.own(0, 1), 0);
+  EXPECT_NEAR(wide.own(0, 1), wide.own(1, 0), 1e-13 * std::abs(wide.own(0, 1)));
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(wide.own);
+  EXPECT_GT(eig.eigenvalues().minCoeff(), 0);
+  // A cut-off past the reach of the end's coordinates is refused (it gave NaN), as is an empty one.
+  wl.outer = 0.3;
+  EXPECT_THROW(assemble_end_blocks(g, {wl}, {EndField::Gap52}), std::invalid_argument);
+  wl.outer = wl.inner;
+  EXPECT_THROW(assemble_end_blocks(g, {wl}, {EndField::Gap52}), std::invalid_argument);
+}
