@@ -27,6 +27,28 @@ namespace {
 ContactEnd scene_end() { return {1, 0.5, 0.25, M_PI + 0.98, -1, 0.05, 0.1}; }
 double end_x(const ContactEnd& e) { return e.cx + e.a * std::cos(e.theta); }
 double end_y(const ContactEnd& e) { return e.cy + e.a * std::sin(e.theta); }
+
+// A rule blind to every curve: 6 x 6 Gauss points on s x s sub-squares of cell (ex, ey), those near
+// the end halved towards it (24 times at most); at(t, u, x, y, weight) for each point, (t, u) local.
+template <class At>
+void blind_points(const Grid& g, const ContactEnd& e, int ex, int ey, int s, const At& at) {
+  static const Quadrature1D q = gauss_legendre(6);
+  auto square = [&](auto&& self, double t0, double u0, double size, int depth) -> void {
+    const double dx = std::max({ex * g.h + t0 * g.h - end_x(e), 0.0, end_x(e) - (ex + t0 + size) * g.h});
+    const double dy = std::max({ey * g.h + u0 * g.h - end_y(e), 0.0, end_y(e) - (ey + u0 + size) * g.h});
+    if (depth < 24 && std::hypot(dx, dy) < size * g.h) {
+      for (int c = 0; c < 4; ++c) self(self, t0 + (c & 1) * size / 2, u0 + (c >> 1) * size / 2, size / 2, depth + 1);
+      return;
+    }
+    for (size_t i = 0; i < q.points.size(); ++i)
+      for (size_t j = 0; j < q.points.size(); ++j) {
+        const double t = t0 + size * q.points[i], u = u0 + size * q.points[j];
+        at(t, u, (ex + t) * g.h, (ey + u) * g.h, q.weights[i] * q.weights[j] * size * size * g.h * g.h);
+      }
+  };
+  for (int sy = 0; sy < s; ++sy)
+    for (int sx = 0; sx < s; ++sx) square(square, static_cast<double>(sx) / s, static_cast<double>(sy) / s, 1.0 / s, 0);
+}
 }  // namespace
 
 TEST(ContactEnd, DerivativesMatchFiniteDifferences) {
@@ -204,35 +226,21 @@ TEST(ContactEnd, TheBlocksMatchARuleBlindToTheCurves) {
   const std::function<double(double, double)> f = [](double x, double y) { return 1 + x * y; };
   const std::vector<EndField> fields{EndField::Gap32, EndField::Gap52};
   const EndBlocks b = assemble_end_blocks(g, {e, e}, fields, 0, {}, &f);
-  const Quadrature1D q = gauss_legendre(6);
   auto blind = [&](int s, Eigen::MatrixXd& border, Eigen::VectorXd& load) {
     border = Eigen::MatrixXd::Zero(g.unknowns(), 2), load = Eigen::VectorXd::Zero(2);
     for (int ey = 0; ey < g.ny; ++ey)
       for (int ex = 0; ex < g.nx; ++ex) {
         if (std::hypot((ex + 0.5) * g.h - end_x(e), (ey + 0.5) * g.h - end_y(e)) > e.outer * 1.2 + g.h) continue;
         const auto dofs = g.element_dofs(ex, ey);
-        auto square = [&](auto&& self, double t0, double u0, double size, int depth) -> void {
-          const double dx = std::max({ex * g.h + t0 * g.h - end_x(e), 0.0, end_x(e) - (ex + t0 + size) * g.h});
-          const double dy = std::max({ey * g.h + u0 * g.h - end_y(e), 0.0, end_y(e) - (ey + u0 + size) * g.h});
-          if (depth < 24 && std::hypot(dx, dy) < size * g.h) {
-            for (int c = 0; c < 4; ++c) self(self, t0 + (c & 1) * size / 2, u0 + (c >> 1) * size / 2, size / 2, depth + 1);
-            return;
+        blind_points(g, e, ex, ey, s, [&](double t, double u, double x, double y, double wt) {
+          const LocalBasis lb = bfs_basis(t, u, g.h);
+          for (int k = 0; k < 2; ++k) {
+            const EndValue v = end_function(e, fields[k], g, x, y);
+            load[k] += wt * f(x, y) * v.w;
+            for (int d = 0; d < 16; ++d)
+              if (dofs[d] >= 0) border(dofs[d], k) += wt * (lb.dxx[d] + lb.dyy[d]) * v.lap;
           }
-          for (size_t i = 0; i < q.points.size(); ++i)
-            for (size_t j = 0; j < q.points.size(); ++j) {
-              const double t = t0 + size * q.points[i], u = u0 + size * q.points[j];
-              const double x = (ex + t) * g.h, y = (ey + u) * g.h, wt = q.weights[i] * q.weights[j] * size * size * g.h * g.h;
-              const LocalBasis lb = bfs_basis(t, u, g.h);
-              for (int k = 0; k < 2; ++k) {
-                const EndValue v = end_function(e, fields[k], g, x, y);
-                load[k] += wt * f(x, y) * v.w;
-                for (int d = 0; d < 16; ++d)
-                  if (dofs[d] >= 0) border(dofs[d], k) += wt * (lb.dxx[d] + lb.dyy[d]) * v.lap;
-              }
-            }
-        };
-        for (int sy = 0; sy < s; ++sy)
-          for (int sx = 0; sx < s; ++sx) square(square, static_cast<double>(sx) / s, static_cast<double>(sy) / s, 1.0 / s, 0);
+        });
       }
   };
   Eigen::MatrixXd coarse, fine;
@@ -407,6 +415,29 @@ TEST(ContactEnd, TheEndsColumnsReadEveryRowByItsOwnRule) {
   EXPECT_LT(worst, 1e-2 * largest);
 }
 
+namespace {
+// Every psi_j's Laplacian of (D31) at (x, y) in cell (ex, ey), its interpolant read off the cell's
+// basis with P, the interpolant as a dense matrix (kept alive by the caller): each function formed
+// in full, where attach_ends forms only those met in the cell.
+OtherLaplacians kink_laplacians_by_basis(const Problem& p, const Eigen::MatrixXd& P) {
+  return [&p, &P](int ex, int ey, double x, double y, Eigen::VectorXd& out) {
+    const Grid& g = p.grid;
+    const auto dofs = g.element_dofs(ex, ey);
+    const LocalBasis b = bfs_basis((x - ex * g.h) / g.h, (y - ey * g.h) / g.h, g.h);
+    const int Kk = p.kink->size();
+    for (int j = 0; j < Kk; ++j) {
+      KinkValue I;
+      for (int i = 0; i < 16; ++i)
+        if (dofs[i] >= 0)
+          I.w += P(dofs[i], j) * b.v[i], I.wx += P(dofs[i], j) * b.dx[i], I.wy += P(dofs[i], j) * b.dy[i],
+              I.wxx += P(dofs[i], j) * b.dxx[i], I.wxy += P(dofs[i], j) * b.dxy[i], I.wyy += P(dofs[i], j) * b.dyy[i];
+      const KinkValue v = kink_field(*p.kink, VectorXd::Unit(Kk, j), I, x, y);
+      out[j] = v.wxx + v.wyy;
+    }
+  };
+}
+}  // namespace
+
 // With (D31) on the rim too, the ends' cross block with its functions: attach_ends forms only the
 // functions met in each cell; here every function is formed at every point, and K's entries must
 // be the same.
@@ -418,19 +449,7 @@ TEST(ContactEnd, TheCrossBlockWithTheKinksFunctionsMissesNone) {
   const int N = g.unknowns(), Kk = p.kink->size();
   const ContactEnd e{g.lx(), g.ly(), 0.25, M_PI + theta_e, -1, 0.05, 0.1};
   const Eigen::MatrixXd P(p.kink_interp);
-  const OtherLaplacians every = [&](int ex, int ey, double x, double y, Eigen::VectorXd& out) {
-    const auto dofs = g.element_dofs(ex, ey);
-    const LocalBasis b = bfs_basis((x - ex * g.h) / g.h, (y - ey * g.h) / g.h, g.h);
-    for (int j = 0; j < Kk; ++j) {
-      KinkValue I;
-      for (int i = 0; i < 16; ++i)
-        if (dofs[i] >= 0)
-          I.w += P(dofs[i], j) * b.v[i], I.wx += P(dofs[i], j) * b.dx[i], I.wy += P(dofs[i], j) * b.dy[i],
-              I.wxx += P(dofs[i], j) * b.dxx[i], I.wxy += P(dofs[i], j) * b.dxy[i], I.wyy += P(dofs[i], j) * b.dyy[i];
-      const KinkValue v = kink_field(*p.kink, VectorXd::Unit(Kk, j), I, x, y);
-      out[j] = v.wxx + v.wyy;
-    }
-  };
+  const OtherLaplacians every = kink_laplacians_by_basis(p, P);
   const OtherKinks kinks = kink_curves(*p.kink);  // the same rule as attach_ends
   const EndBlocks full = assemble_end_blocks(g, {e}, {EndField::Gap52}, Kk, every, &p.scene.load, &kinks);
   attach_ends(p, {e}, {EndField::Gap52});
@@ -445,7 +464,7 @@ TEST(ContactEnd, TheCrossBlockWithTheKinksFunctionsMissesNone) {
 // The cross block of the ends' functions with (D31)'s, (Lap psi_j, Lap E), against the same
 // integral by a tensor rule blind to every curve either function kinks on (the rim, (D31)'s cut-off
 // and knot rays, the end's own cut-off), on s x s sub-squares of each cell, halved again near the
-// end itself: its own error shows from s = 8 to 16, and the assembled block must lie within it.
+// end itself (blind_points): its own error shows from s = 8 to 16, and the assembled block must lie within it.
 TEST(ContactEnd, TheCrossBlockWithTheKinksFunctionsMatchesARuleBlindToTheCurves) {
   const double theta_e = 0.98;
   Problem p = quarter_laid_out(32, theta_e, true);
@@ -454,49 +473,20 @@ TEST(ContactEnd, TheCrossBlockWithTheKinksFunctionsMatchesARuleBlindToTheCurves)
   const int Kk = p.kink->size();
   const ContactEnd e{g.lx(), g.ly(), 0.25, M_PI + theta_e, -1, 0.05, 0.1};
   const Eigen::MatrixXd P(p.kink_interp);
-  // Every psi_j's Laplacian at (x, y) in cell (ex, ey), its interpolant read off the cell's basis.
-  const OtherLaplacians every = [&](int ex, int ey, double x, double y, Eigen::VectorXd& out) {
-    const auto dofs = g.element_dofs(ex, ey);
-    const LocalBasis b = bfs_basis((x - ex * g.h) / g.h, (y - ey * g.h) / g.h, g.h);
-    for (int j = 0; j < Kk; ++j) {
-      KinkValue I;
-      for (int i = 0; i < 16; ++i)
-        if (dofs[i] >= 0)
-          I.w += P(dofs[i], j) * b.v[i], I.wx += P(dofs[i], j) * b.dx[i], I.wy += P(dofs[i], j) * b.dy[i],
-              I.wxx += P(dofs[i], j) * b.dxx[i], I.wxy += P(dofs[i], j) * b.dxy[i], I.wyy += P(dofs[i], j) * b.dyy[i];
-      out[j] = [&] {
-        const KinkValue v = kink_field(*p.kink, VectorXd::Unit(Kk, j), I, x, y);
-        return v.wxx + v.wyy;
-      }();
-    }
-  };
+  const OtherLaplacians every = kink_laplacians_by_basis(p, P);
   const OtherKinks kinks = kink_curves(*p.kink);
   const EndBlocks b = assemble_end_blocks(g, {e}, {EndField::Gap52}, Kk, every, &p.scene.load, &kinks);
-  const Quadrature1D q = gauss_legendre(6);
   auto blind = [&](int s) {
     Eigen::VectorXd cross = Eigen::VectorXd::Zero(Kk), lap(Kk);
     for (int ey = 0; ey < g.ny; ++ey)
       for (int ex = 0; ex < g.nx; ++ex) {
         if (std::hypot((ex + 0.5) * g.h - end_x(e), (ey + 0.5) * g.h - end_y(e)) > end_reach(e) + g.h) continue;
-        auto square = [&](auto&& self, double t0, double u0, double size, int depth) -> void {
-          const double dx = std::max({ex * g.h + t0 * g.h - end_x(e), 0.0, end_x(e) - (ex + t0 + size) * g.h});
-          const double dy = std::max({ey * g.h + u0 * g.h - end_y(e), 0.0, end_y(e) - (ey + u0 + size) * g.h});
-          if (depth < 20 && std::hypot(dx, dy) < size * g.h) {
-            for (int c = 0; c < 4; ++c) self(self, t0 + (c & 1) * size / 2, u0 + (c >> 1) * size / 2, size / 2, depth + 1);
-            return;
-          }
-          for (size_t i = 0; i < q.points.size(); ++i)
-            for (size_t k = 0; k < q.points.size(); ++k) {
-              const double t = t0 + size * q.points[i], u = u0 + size * q.points[k];
-              const double x = (ex + t) * g.h, y = (ey + u) * g.h, wt = q.weights[i] * q.weights[k] * size * size * g.h * g.h;
-              const EndValue v = end_function(e, EndField::Gap52, g, x, y);
-              if (v.lap == 0) continue;
-              every(ex, ey, x, y, lap);
-              cross += wt * v.lap * lap;
-            }
-        };
-        for (int sy = 0; sy < s; ++sy)
-          for (int sx = 0; sx < s; ++sx) square(square, static_cast<double>(sx) / s, static_cast<double>(sy) / s, 1.0 / s, 0);
+        blind_points(g, e, ex, ey, s, [&](double, double, double x, double y, double wt) {
+          const EndValue v = end_function(e, EndField::Gap52, g, x, y);
+          if (v.lap == 0) return;
+          every(ex, ey, x, y, lap);
+          cross += wt * v.lap * lap;
+        });
       }
     return cross;
   };
