@@ -237,8 +237,10 @@ EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends
                               const OtherKinks* kinks) {
   if (ends.size() != fields.size()) throw std::invalid_argument("assemble_end_blocks: one field per end");
   if (others > 0 && !laplacians) throw std::invalid_argument("assemble_end_blocks: other functions without their Laplacians");
-  // The cut-off's curves are followed in the fitted coordinates, which end at the circle's centre
-  // (cutoff_circle_on): past a - sqrt(2) h they would be read there and the blocks come out NaN.
+  // The cut-off's curves are followed in the fitted coordinates, which end at the circle's centre:
+  // cutoff_circle_on takes a square there as uncut, right only while outer < a - sqrt(2) h. Past
+  // that the centre's squares are misread, and a node at the centre makes the blocks NaN (the
+  // end's field divides by r).
   for (const ContactEnd& e : ends)
     if (!(e.inner > 0 && e.outer > e.inner && e.outer < e.a - std::sqrt(2.0) * g.h)) {
       std::ostringstream m;

@@ -296,6 +296,7 @@ Bicubic bicubic_from_corners(const std::array<CornerJet, 4>& corners, double hx,
     }
   return p;
 }
+// @end bicubic-from-corners
 
 Bicubic circle_on(double cx, double cy, double r, double x0, double y0, double size) {
   std::array<CornerJet, 4> c;
@@ -305,7 +306,6 @@ Bicubic circle_on(double cx, double cy, double r, double x0, double y0, double s
   }
   return bicubic_from_corners(c, size, size);
 }
-// @end bicubic-from-corners
 
 void implicit_rule(double x0, double y0, double hx, double hy, const std::vector<Bicubic>& psi, ImplicitOrders orders,
                    std::vector<WeightedPoint>& out, int max_depth) {

@@ -61,7 +61,8 @@ void implicit_rule(double x0, double y0, double hx, double hy, const std::vector
                    std::vector<WeightedPoint>& out, int max_depth = 12);
 
 // The roots of a cubic in Bernstein form on [0, 1] (coefficients c[0..3]), increasing; a root of
-// even multiplicity, where the cubic touches zero without crossing, need not be found.
+// even multiplicity, where the cubic touches zero without crossing, need not be found. The zero
+// cubic has none: a curve along the line splits nothing there.
 std::vector<double> cubic_roots(const std::array<double, 4>& c);
 
 }  // namespace plate

@@ -504,7 +504,8 @@ TEST(ContactEnd, TheCrossBlockWithTheKinksFunctionsMatchesARuleBlindToTheCurves)
 
 // Two distinct ends on one rim, as the whole 2 x 1 plate has them (theta = pi + 0.98 and
 // 2 pi - 0.98, the lower half's two): assembled together, each end's border, load and own entry
-// are those it gets alone, since every integral of one end's function is that end's own. Where
+// are those it gets alone, to round-off, since the other end's curves and halvings reach none of
+// the squares where this end's function lives (its reach plus a cell each side). Where
 // the two cut-offs are far apart the coupling (Lap E_1, Lap E_2) is zero; brought within reach
 // of each other it is not, and the own block stays symmetric and positive definite.
 TEST(ContactEnd, TwoDistinctEndsOnOneRimAssembleAsEachAlone) {
@@ -522,7 +523,7 @@ TEST(ContactEnd, TwoDistinctEndsOnOneRimAssembleAsEachAlone) {
   EXPECT_NEAR(both.load[1], r.load[0], 1e-13 * std::abs(r.load[0]));
   EXPECT_NEAR(both.own(0, 0), l.own(0, 0), 1e-13 * l.own(0, 0));
   EXPECT_NEAR(both.own(1, 1), r.own(0, 0), 1e-13 * r.own(0, 0));
-  // The ends lie 2 a cos(0.98) = 0.28 apart and each reaches about 0.08: no overlap.
+  // The ends lie 2 a cos(0.98) = 0.28 apart and each reaches about 0.085: no overlap.
   ASSERT_GT(std::hypot(end_x(left) - end_x(right), end_y(left) - end_y(right)), 2 * end_reach(left) + 2 * g.h);
   EXPECT_EQ(both.own(0, 1), 0);
   EXPECT_EQ(both.own(1, 0), 0);
@@ -534,7 +535,8 @@ TEST(ContactEnd, TwoDistinctEndsOnOneRimAssembleAsEachAlone) {
   EXPECT_NEAR(wide.own(0, 1), wide.own(1, 0), 1e-13 * std::abs(wide.own(0, 1)));
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(wide.own);
   EXPECT_GT(eig.eigenvalues().minCoeff(), 0);
-  // A cut-off past the reach of the end's coordinates is refused (it gave NaN), as is an empty one.
+  // A cut-off past a - sqrt(2) h, where the fitted coordinates stop, is refused (it gave NaN), as is
+  // an empty one.
   wl.outer = 0.3;
   EXPECT_THROW(assemble_end_blocks(g, {wl}, {EndField::Gap52}), std::invalid_argument);
   wl.outer = wl.inner;
