@@ -241,13 +241,14 @@ EndBlocks assemble_end_blocks(const Grid& g, const std::vector<ContactEnd>& ends
   // cutoff_circle_on takes a square there as uncut, right only while outer < a - sqrt(2) h. Past
   // that the centre's squares are misread, and a node at the centre makes the blocks NaN (the
   // end's field divides by r).
-  for (const ContactEnd& e : ends)
-    if (!(e.inner > 0 && e.outer > e.inner && e.outer < e.a - std::sqrt(2.0) * g.h)) {
-      std::ostringstream m;
-      m << "assemble_end_blocks: the end's cut-off (inner " << e.inner << ", outer " << e.outer
-        << ") must have 0 < inner < outer < a - sqrt(2) h = " << e.a - std::sqrt(2.0) * g.h;
-      throw std::invalid_argument(m.str());
-    }
+  for (const ContactEnd& e : ends) {
+    const double widest = e.a - std::sqrt(2.0) * g.h;
+    if (e.inner > 0 && e.outer > e.inner && e.outer < widest) continue;
+    std::ostringstream m;
+    m << "assemble_end_blocks: the end's cut-off (inner " << e.inner << ", outer " << e.outer
+      << ") must have 0 < inner < outer < a - sqrt(2) h = " << widest;
+    throw std::invalid_argument(m.str());
+  }
   const int k = static_cast<int>(ends.size()), N = g.unknowns();
   EndBlocks out{Eigen::MatrixXd::Zero(N, k), Eigen::MatrixXd::Zero(k, k), Eigen::MatrixXd::Zero(others, k), Eigen::VectorXd::Zero(k)};
   Eigen::VectorXd olap(others);
