@@ -140,18 +140,21 @@ double penalty_backward_error(const Problem& p, const VectorXd& w, double eps) {
   return scale > 0 ? r.lpNorm<Eigen::Infinity>() / scale : r.lpNorm<Eigen::Infinity>();
 }
 
-double dip_below_edge(const Problem& p, const VectorXd& w) {
+EdgeDip deepest_dip_below_edge(const Problem& p, const VectorXd& w) {
   const Field& obstacle = p.scene.obstacle;
-  if (!has_edge(p.spec.kind) || p.scene.edge.empty()) return NAN;
+  if (!has_edge(p.spec.kind) || p.scene.edge.empty()) return {};
   const EdgePoints e = edge_points(p.scene.edge, p.grid.h / 32);
-  double dip = 0;
+  EdgeDip dip{0, NAN};
   const PlateField field(p, w);
   for (int k = 0; k < e.size(); ++k) {
     const double phi = obstacle_on_edge(obstacle, e.x[k], e.y[k], e.nx[k], e.ny[k], p.grid.h);
-    if (std::isfinite(phi)) dip = std::max(dip, phi - field.at(e.x[k], e.y[k]).w);
+    const double below = std::isfinite(phi) ? phi - field.at(e.x[k], e.y[k]).w : 0.0;
+    if (below > dip.depth) dip = {below, e.theta.empty() ? NAN : e.theta[k]};
   }
   return dip;
 }
+
+double dip_below_edge(const Problem& p, const VectorXd& w) { return deepest_dip_below_edge(p, w).depth; }
 
 NodalFields nodal_fields(const Problem& p, const VectorXd& w, double eps, double nu) {
   return nodal_fields(p, w, contact_force_density(p, w, eps), nu);

@@ -67,6 +67,13 @@ double penalty_backward_error(const Problem& p, const VectorXd& w, double eps);
 // (spline rows average w, point rows hold it at points): max over points h / 32 apart on the curve of
 // phi - w_h, 0 if the plate is nowhere below. NaN without an edge curve.
 double dip_below_edge(const Problem& p, const VectorXd& w);
+// The same, with where it is deepest: the angle about the circle's centre (NaN for a polygon, or
+// where the plate is nowhere below), so that a report can say which rows failed to hold it there.
+struct EdgeDip {
+  double depth = NAN;
+  double theta = NAN;
+};
+EdgeDip deepest_dip_below_edge(const Problem& p, const VectorXd& w);
 
 // Everything the paper reports "at the nodes of the grid", at all (nx+1)(ny+1) nodes.
 // Second derivatives jump across element edges; at a node we average the elements around it.

@@ -61,6 +61,19 @@ bool rim_layout_fits(const Problem& p, const VectorXd& w, const VectorXd& lambda
   return s.rim.periodic || arcs_inside(s.rim, rim_contact(p, w, lambda, touch), cell_angle(p));
 }
 
+double cells_inside_spline_arc(const Problem& p, double theta) {
+  const Sampling& s = p.sampling;
+  if (!(s.edge_spline_degree > 0) || !std::isfinite(theta)) return NAN;
+  if (s.rim.periodic) return INFINITY;
+  for (const SplineArc& a : s.rim.arcs)
+    if (a.contains(theta)) {
+      double along = std::fmod(theta - a.begin(), 2 * M_PI);  // an arc may be longer than pi
+      if (along < 0) along += 2 * M_PI;
+      return std::max(0.0, std::min(along, a.end() - a.begin() - along)) / cell_angle(p);
+    }
+  return NAN;
+}
+
 // @region rim-dips
 std::vector<double> rim_dips(const Problem& p, const VectorXd& w, double slack) {
   const Field& obstacle = p.scene.obstacle;

@@ -36,4 +36,9 @@ bool rim_layout_fits(const Problem& p, const VectorXd& w, const VectorXd& lambda
 // are none ends with w_h >= phi at every lattice point off the arcs, whatever order it added them in.
 std::vector<double> rim_dips(const Problem& p, const VectorXd& w, double slack);
 
+// Which of p's rows hold the plate at angle theta on its circle, for a report of where it dips: on
+// a spline arc, how far inside it in cells (the distance to the arc's nearer end over h / r);
+// infinity on periodic splines, which have no end; NaN off every arc, where point rows hold it.
+double cells_inside_spline_arc(const Problem& p, double theta);
+
 }  // namespace plate

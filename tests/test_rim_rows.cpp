@@ -11,6 +11,7 @@
 #include "extrema.hpp"
 #include "fields.hpp"
 #include "line_force.hpp"
+#include "rim_exchange.hpp"
 #include "rim_rows.hpp"
 
 using namespace plate;
@@ -96,4 +97,41 @@ TEST(RimRows, PointWeightsCoverTheCircleOffTheArcs) {
     total += w;
   }
   EXPECT_NEAR(total, 0.25 * (2 * M_PI - 1.0 - 0.7), 1e-13);
+}
+
+// Where the plate dips deepest, and which rows hold it there: on the 2 x 1 lift-off scene at
+// h = 1/32 the deepest dip is phi - w_h at the angle reported; an angle on a spline arc lies as many
+// cells inside it as the arc's geometry says (half its length at its middle, half a cell half a cell
+// in), one off every arc lies between points, and the same angles a turn away read the same. Rows
+// at points have no arcs, and the paper's scene keeps its periodic splines, which have no end.
+TEST(RimRows, TheDeepestDipIsPlacedAmongTheRowsThatHoldThePlate) {
+  const auto solve = [](const Scene& scene, int n, EdgeRows rows) {
+    SceneSolution x = solve_exact_scene(scene, n, SamplingSpec{SamplingKind::Edge, rows}, ExactOptions{});
+    EXPECT_TRUE(x.result.converged) << x.result.message;
+    return x;
+  };
+  const Scene lift_off = Scene::rectangle(2, 1).over(Cylinder{1, 0.5, 0.25, 0.0625});
+  const SceneSolution x = solve(lift_off, 64, EdgeRows{});
+  const Problem& p = x.whole();
+  const EdgeDip dip = deepest_dip_below_edge(p, x.result.w);
+  ASSERT_GT(dip.depth, 0);
+  EXPECT_EQ(dip.depth, dip_below_edge(p, x.result.w));
+  const double xd = 1 + 0.25 * std::cos(dip.theta), yd = 0.5 + 0.25 * std::sin(dip.theta);
+  EXPECT_NEAR(0.0625 - PlateField(p, x.result.w).at(xd, yd).w, dip.depth, 1e-15);
+  const double cell = p.grid.h / 0.25;  // a cell's angle on the circle
+  ASSERT_EQ(p.sampling.rim.arcs.size(), 2u);
+  for (const SplineArc& a : p.sampling.rim.arcs) {
+    const double middle = 0.5 * (a.begin() + a.end());
+    EXPECT_NEAR(cells_inside_spline_arc(p, middle), 0.5 * (a.end() - a.begin()) / cell, 1e-9);
+    EXPECT_NEAR(cells_inside_spline_arc(p, middle + 2 * M_PI), 0.5 * (a.end() - a.begin()) / cell, 1e-9);
+    EXPECT_NEAR(cells_inside_spline_arc(p, a.begin() + 0.5 * cell), 0.5, 1e-9);
+    EXPECT_NEAR(cells_inside_spline_arc(p, a.end() - 0.5 * cell - 2 * M_PI), 0.5, 1e-9);
+    EXPECT_TRUE(std::isnan(cells_inside_spline_arc(p, a.begin() - 0.5 * cell)));
+  }
+  EXPECT_TRUE(std::isnan(cells_inside_spline_arc(p, 0.0)));  // theta = 0 points along the long span, off the contact
+  EXPECT_TRUE(std::isnan(cells_inside_spline_arc(p, NAN)));
+  const SceneSolution points = solve(lift_off, 64, EdgeRows::points());
+  EXPECT_TRUE(std::isnan(cells_inside_spline_arc(points.whole(), M_PI / 2)));
+  const SceneSolution paper = solve(Scene::rectangle(1, 1).over(Cylinder{0.5, 0.5, 0.25, 0.0625}), 16, EdgeRows{});
+  EXPECT_TRUE(std::isinf(cells_inside_spline_arc(paper.whole(), M_PI / 2)));
 }
