@@ -23,6 +23,7 @@
 #include "line_force.hpp"
 #include "progress.hpp"
 #include "refinement.hpp"
+#include "rim_exchange.hpp"
 #include "stopwatch.hpp"
 #include "words.hpp"
 
@@ -61,6 +62,7 @@ struct Run {
   double h = 0;
   bool certified = false;
   double max_w = 0, force = 0, dip = 0, seconds = 0;
+  double dip_cells = NAN;  // the deepest dip's place: cells inside a spline arc (inf: periodic; NaN: between points)
   double noise_w = 0, noise_force = 0;  // what round-off may change in them (printed above it)
   int arcs = -1, points = 0, exchanged = 0;  // the layout of the default rows (arcs -1: periodic splines)
   bool kinked = false;                        // solved with the functions of (D31)
@@ -80,7 +82,9 @@ Run solve(const Case& s, const Rows& r, int n) {
   run.certified = x.result.converged;
   run.max_w = extremum_of_w(x.whole(), x.result.w, +1).value;
   run.force = total_contact_force(x.whole(), x.result.lambda);
-  run.dip = dip_below_edge(x.whole(), x.result.w);
+  const EdgeDip dip = deepest_dip_below_edge(x.whole(), x.result.w);
+  run.dip = dip.depth;
+  run.dip_cells = cells_inside_spline_arc(x.whole(), dip.theta);
   run.kinked = x.solved.kink.has_value();
   const Sampling& sam = x.whole().sampling;
   if (sam.rim_laid_out()) {
@@ -122,6 +126,21 @@ Run freefem(const Case& s, int m, const std::string& work) {
   return run;
 }
 
+// Which rows failed to hold the plate where it dips deepest (empty: it dips nowhere, or FreeFEM).
+std::string dip_on(const Run& r) {
+  if (!(r.dip > 0)) return "";
+  return std::isnan(r.dip_cells) ? "points" : std::isinf(r.dip_cells) ? "periodic" : "arc";
+}
+
+// The same in words, for the report.
+std::string dip_place(const Run& r) {
+  const std::string on = dip_on(r);
+  if (on == "arc") return "on a spline arc, " + fmt("%.1f", r.dip_cells) + " cells in";
+  if (on == "points") return "between points";
+  if (on == "periodic") return "periodic splines";
+  return "—";
+}
+
 // The error bar on the finest value of a sequence (error_bar.hpp), as a cell of a verdict: the phrase
 // for how it was found is chosen here, its words are in reports/words.md.
 std::string bar_cell(const ErrorBar& b) {
@@ -148,7 +167,7 @@ std::string report(const std::vector<Run>& runs, int& failures) {
   md << words("liftoff.intro") << "\n\n";
   failures = 0;
   for (const Case& s : kScenes) {
-    md << "### " << s.name << "\n\n| h | rows | certified | max w | total force | dip / R | layout |\n|---|---|:---:|---:|---:|---:|---|\n";
+    md << "### " << s.name << "\n\n| h | rows | certified | max w | total force | dip / R | deepest | layout |\n|---|---|:---:|---:|---:|---:|---|---|\n";
     std::vector<double> ours, theirs, kinked;
     double ours_noise = 0, theirs_noise = 0, kink_noise = 0;  // of the finest of each
     for (const Run& r : runs) {
@@ -165,7 +184,7 @@ std::string report(const std::vector<Run>& runs, int& failures) {
       const std::string space = r.rows && r.rows->kink ? (r.kinked ? "; kink carried" : "; plain (D31 does not fit)") : "";
       md << "| " << (!r.rows ? fmt("%.3g", r.h) : "1/" + std::to_string(static_cast<int>(std::lround(1 / r.h)))) << " | "
          << (r.rows ? r.rows->name : "FreeFEM") << " | " << (r.certified ? "yes" : "**no**") << " | " << fmt_value(r.max_w, r.noise_w, 12, "nan") << " | " << fmt_value(r.force, r.noise_force, 12, "nan") << " | "
-         << (std::isfinite(r.dip) ? fmt("%.1e", r.dip / kR) : std::string("—")) << " | " << layout << space << " |\n";
+         << (std::isfinite(r.dip) ? fmt("%.1e", r.dip / kR) : std::string("—")) << " | " << dip_place(r) << " | " << layout << space << " |\n";
     }
     const ErrorBar a = finest_bar(ours);
     const ErrorBar b = error_bar(theirs);
@@ -228,15 +247,18 @@ int main(int argc, char** argv) {
            "# the grids h = lx/n, and by FreeFEM's exact script (n: cells along a quarter of the circle; h: the\n"
            "# longest mesh edge). max_w is the field's maximum; dip the plate's largest depth below the rim\n"
            "# between rows (h/32 apart); arcs and points the layout of the default rows (arcs -1: periodic\n"
-           "# splines); exchanged the point rows added where the plate dipped. Digits above round-off. Made by\n"
-           "# build/liftoff; the run times are in liftoff_timings.csv\n"
-           "scene,rows,n,h,certified,max_w,total_force,dip,arcs,points,exchanged\n";
+           "# splines); exchanged the point rows added where the plate dipped; dip_on the rows where the dip is\n"
+           "# deepest (arc: on a spline arc, dip_cells inside its nearer end; points: off every arc; periodic:\n"
+           "# periodic splines). Digits above round-off. Made by build/liftoff; the run times are in\n"
+           "# liftoff_timings.csv\n"
+           "scene,rows,n,h,certified,max_w,total_force,dip,arcs,points,exchanged,dip_on,dip_cells\n";
     std::ostringstream timings;
     timings << "# liftoff: seconds per run (this machine, this run)\nscene,rows,n,seconds\n";
     for (const Run& r : runs) {
       csv << r.scene->key << ',' << (r.rows ? r.rows->key : "freefem") << ',' << r.n << ',' << fmt("%.6g", r.h) << ',' << (r.certified ? 1 : 0) << ','
           << fmt_value(r.max_w, r.noise_w, 12, "nan") << ',' << fmt_value(r.force, r.noise_force, 12, "nan") << ','
-          << (std::isfinite(r.dip) ? fmt("%.2e", r.dip) : std::string()) << ',' << r.arcs << ',' << r.points << ',' << r.exchanged << '\n';
+          << (std::isfinite(r.dip) ? fmt("%.2e", r.dip) : std::string()) << ',' << r.arcs << ',' << r.points << ',' << r.exchanged << ','
+          << dip_on(r) << ',' << (std::isfinite(r.dip_cells) ? fmt("%.1f", r.dip_cells) : std::string()) << '\n';
       timings << r.scene->key << ',' << (r.rows ? r.rows->key : "freefem") << ',' << r.n << ',' << fmt("%.3g", r.seconds) << '\n';
     }
     int failures = 0;

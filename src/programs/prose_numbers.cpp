@@ -411,6 +411,41 @@ void liftoff_numbers(Numbers& num, const std::string& results) {
   num.put("liftoff.kink_dip_finest_max", fmt("%.1e", finest_dip("kink")), src + " kink rows on each scene's finest grid: max dip / R");
 }
 
+// Where and how fast the default rows' dip goes (results/liftoff.csv): how many of their runs, with
+// the kink carried or not, dip deepest on a spline arc; how far inside its end at most on each scene's
+// finest grid with the kink; and, per scene, the order at which the dip falls with h, fitted by least
+// squares over all the grids and from the last two alone.
+void liftoff_dip_numbers(Numbers& num, const std::string& results) {
+  const CsvTable t = read_csv_table(results + "/liftoff.csv");
+  const std::string src = "results/liftoff.csv";
+  int runs = 0, on_arcs = 0;
+  for (const char* rows : {"default", "kink"})
+    for (std::size_t r : t.where("rows", rows)) ++runs, on_arcs += t.text(r, "dip_on") == "arc";
+  num.put("liftoff.laid_out_runs", std::to_string(runs), src + " default and kink rows: runs");
+  num.put("liftoff.dips_on_arcs", std::to_string(on_arcs), src + " default and kink rows: runs with dip_on = arc");
+  std::map<std::string, std::vector<std::size_t>> scenes;  // scene -> its kink rows, coarse to fine
+  for (std::size_t r : t.where("rows", "kink")) scenes[t.text(r, "scene")].push_back(r);
+  Range cells, fitted, last;
+  for (auto& [scene, rows] : scenes) {
+    std::sort(rows.begin(), rows.end(), [&](std::size_t a, std::size_t b) { return t.number(a, "h") > t.number(b, "h"); });
+    if (rows.size() < 3) throw std::runtime_error("prose_numbers: fewer than three kink grids for " + scene + " in " + src);
+    const std::size_t f = rows.back(), b = rows[rows.size() - 2];
+    if (t.text(f, "dip_on") == "arc") cells.add(t.number(f, "dip_cells"));
+    double mx = 0, my = 0, sxy = 0, sxx = 0;
+    for (std::size_t r : rows) mx += std::log(t.number(r, "h")) / rows.size(), my += std::log(t.number(r, "dip")) / rows.size();
+    for (std::size_t r : rows) {
+      const double x = std::log(t.number(r, "h")) - mx;
+      sxy += x * (std::log(t.number(r, "dip")) - my), sxx += x * x;
+    }
+    fitted.add(sxy / sxx);
+    last.add(std::log(t.number(b, "dip") / t.number(f, "dip")) / std::log(t.number(b, "h") / t.number(f, "h")));
+  }
+  const auto one = [](double v) { return fmt("%.1f", v); };
+  num.put_range("liftoff.kink_finest_dip_cells", cells, one, src + " kink rows on each scene's finest grid whose dip is on an arc: dip_cells");
+  num.put_range("liftoff.kink_dip_order_fitted", fitted, one, src + " kink rows of each scene: least-squares slope of log dip against log h");
+  num.put_range("liftoff.kink_dip_order_last", last, one, src + " kink rows of each scene: the order of the dip from its two finest grids");
+}
+
 // What carrying the kink buys (results/kink.csv): every row's errors and, from the grid before, its
 // observed orders, keyed kink.<scene>_<space>_<column>_<n>; scene paper, off_centre or oblong, space
 // plain or kink.
@@ -563,6 +598,7 @@ int main(int argc, char** argv) {
     continuum_numbers(fixed, results);
     rim_series_numbers(fixed, results);
     liftoff_numbers(fixed, results);
+    liftoff_dip_numbers(fixed, results);
     kink_numbers(fixed, results);
     linear_history_numbers(fixed, results);
     published_numbers(fixed, reference);
