@@ -411,3 +411,35 @@ TEST(Cli, ThePapersLinearRunsAreRefusedAndItsNonlinearRunsCertified) {
       EXPECT_EQ(run_plate(args + " --scheme nonlinear").status, 0) << args;
     }
 }
+
+// Where the plate dips deepest, and between which rows: on the 2 x 1 lift-off scene (h = 1/32) the
+// default rows let it dip on a spline arc, at an angle where w_h, asked for as a --point of a second
+// run, lies below the rim by the dip; rows at points let it dip between points, with no arc to be
+// inside. The summary says the same as the JSON.
+TEST(Cli, TheDeepestDipNamesTheRowsThatLetThePlateDip) {
+  const std::string json = temp_path("dip_rows.json");
+  const std::string scene = "--lx 2 --ly 1 --centre 1,0.5 -n 64 ";
+  std::filesystem::remove(json);
+  const PlateRun def = run_plate(scene + "--json " + json);
+  ASSERT_EQ(def.status, 0) << def.output;
+  const auto j = read_json(json);
+  ASSERT_TRUE(j.contains("dip_below_edge_theta")) << j.dump();
+  EXPECT_EQ(j["dip_below_edge_rows"], "on a spline arc") << j.dump();
+  EXPECT_GE(j["dip_below_edge_cells_inside_arc"].get<double>(), 0.0) << j.dump();
+  EXPECT_NE(def.output.find("on a spline arc"), std::string::npos) << def.output;
+  const double theta = j["dip_below_edge_theta"].get<double>(), dip = j["dip_below_edge"].get<double>();
+  ASSERT_GT(dip, 0);
+  char point[80];
+  std::snprintf(point, sizeof point, "%.17g,%.17g", 1 + 0.25 * std::cos(theta), 0.5 + 0.25 * std::sin(theta));
+  std::filesystem::remove(json);
+  const PlateRun at = run_plate(scene + "--point " + point + " --json " + json);
+  ASSERT_EQ(at.status, 0) << at.output;
+  EXPECT_NEAR(0.0625 - read_json(json)["w_at_points"][0]["w"].get<double>(), dip, 1e-14) << at.output;
+  std::filesystem::remove(json);
+  const PlateRun points = run_plate(scene + "--edge-rows points --json " + json);
+  ASSERT_EQ(points.status, 0) << points.output;
+  const auto jp = read_json(json);
+  EXPECT_EQ(jp["dip_below_edge_rows"], "between point rows") << jp.dump();
+  EXPECT_FALSE(jp.contains("dip_below_edge_cells_inside_arc")) << jp.dump();
+  std::filesystem::remove(json);
+}

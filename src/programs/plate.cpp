@@ -26,6 +26,7 @@
 #include "norms.hpp"
 #include "paper_numbers.hpp"
 #include "progress.hpp"
+#include "rim_exchange.hpp"
 #include "rim_report.hpp"
 #include "stopwatch.hpp"
 #include "summary.hpp"
@@ -678,7 +679,10 @@ Outputs solve_grid(const Options& o, Run& r, plate::SceneSolution& scene, plate:
   progress.stage(result.converged ? "solved; writing the outputs" : "not converged; writing the outputs");
   nodes = nodal_fields(problem, result.w, xi, r.report.nu);
   r.report.nodal = nodal_extremes(nodes);
-  r.report.dip_below_edge = dip_below_edge(problem, result.w);
+  const EdgeDip dip = deepest_dip_below_edge(problem, result.w);
+  r.report.dip_below_edge = dip.depth;
+  r.report.dip_theta = dip.theta;
+  r.report.dip_cells = cells_inside_spline_arc(problem, dip.theta);
   // The obstacle's jumps where no edge rows sit (edge sampling puts them on the edge curve; nodes
   // and Gauss points have none), kept where the plate touches the jump's higher side at a node
   // within two cells: a jump the plate keeps clear of constrains nothing.

@@ -85,6 +85,11 @@ Json numbers(const std::vector<double>& v) {
 
 // What the line load's rows are: the knots of periodic splines (D12), splines on the contact arcs
 // and points off them (D28), or points.
+// The rows between which the plate dips deepest (Report::dip_cells).
+std::string dip_rows(const Report& r) {
+  return std::isnan(r.dip_cells) ? "between point rows" : std::isinf(r.dip_cells) ? "on the periodic spline rows" : "on a spline arc";
+}
+
 std::string rows_are(const LineForce& f) {
   if (f.laid_out()) return "spline bases on the contact arcs and points off them";
   return f.spline_degree > 0 ? "spline knots" : "points";
@@ -221,6 +226,11 @@ std::string summary_json(const Report& r) {
   j["line_force"] = line_force_json(r.line, r.line_figures);
   j["constraint_violation"] = number(r.violation);
   j["dip_below_edge"] = number(r.dip_below_edge);
+  if (std::isfinite(r.dip_theta)) {
+    j["dip_below_edge_theta"] = number(r.dip_theta);
+    j["dip_below_edge_rows"] = dip_rows(r);
+    if (std::isfinite(r.dip_cells)) j["dip_below_edge_cells_inside_arc"] = number(r.dip_cells);
+  }
   check_json(j, r);
   // What each bound is about: the certificate, the discrete answer; the error bars, the plate's.
   j["certificate_is"] = "discrete: the distance of this answer from the exact solution of the discrete problem";
@@ -279,6 +289,9 @@ std::string summary_text(const Report& r) {
     o << "\n";
     if (std::isfinite(r.dip_below_edge))
       o << "  between the rows the plate dips at most " << summary_value(r.dip_below_edge) << " below the edge (points h/32 apart)"
+        << (std::isfinite(r.dip_theta) ? ", deepest at theta = " + summary_value(r.dip_theta) + ", " + dip_rows(r) +
+                                             (std::isfinite(r.dip_cells) ? " " + summary_value(r.dip_cells) + " cells inside its end" : "")
+                                       : std::string())
         << (r.dip_below_edge > 0 ? ": w_h is at least that far from the plate's answer there, which keeps above the obstacle" : "") << "\n";
     if (!l.fourier.empty() && l.spline_degree == 0) {
       o << "  fit q(theta) ~";

@@ -44,6 +44,8 @@ struct Report {
   std::vector<double> refinement;     // the exact solve's refinement steps, each correction's relative size
   double refinement_undone = 0;       // its first correction, when the next did not confirm it (then undone)
   double dip_below_edge = NAN;        // max of phi - w along the edge curve (NaN: no edge)
+  double dip_theta = NAN;             // where it is deepest, on a circle (NaN: a polygon, or no dip)
+  double dip_cells = NAN;             // the rows there: cells inside a spline arc; inf periodic; NaN points
   // Jumps of the obstacle with no edge rows there (obstacle_jumps.hpp) that the plate comes near.
   std::vector<ObstacleJump> jumps;
   // The extremes of the finite-element fields over the plate and w_h at `points` (extrema.hpp), or
