@@ -249,16 +249,17 @@ int main(int argc, char** argv) {
            "# between rows (h/32 apart); arcs and points the layout of the default rows (arcs -1: periodic\n"
            "# splines); exchanged the point rows added where the plate dipped; dip_on the rows where the dip is\n"
            "# deepest (arc: on a spline arc, dip_cells inside its nearer end; points: off every arc; periodic:\n"
-           "# periodic splines). Digits above round-off. Made by build/liftoff; the run times are in\n"
-           "# liftoff_timings.csv\n"
-           "scene,rows,n,h,certified,max_w,total_force,dip,arcs,points,exchanged,dip_on,dip_cells\n";
+           "# periodic splines); kinked 1 where the run carried the kink (D31). Digits above round-off. Made\n"
+           "# by build/liftoff; the run times are in liftoff_timings.csv\n"
+           "scene,rows,n,h,certified,max_w,total_force,dip,arcs,points,exchanged,dip_on,dip_cells,kinked\n";
     std::ostringstream timings;
     timings << "# liftoff: seconds per run (this machine, this run)\nscene,rows,n,seconds\n";
     for (const Run& r : runs) {
       csv << r.scene->key << ',' << (r.rows ? r.rows->key : "freefem") << ',' << r.n << ',' << fmt("%.6g", r.h) << ',' << (r.certified ? 1 : 0) << ','
           << fmt_value(r.max_w, r.noise_w, 12, "nan") << ',' << fmt_value(r.force, r.noise_force, 12, "nan") << ','
           << (std::isfinite(r.dip) ? fmt("%.2e", r.dip) : std::string()) << ',' << r.arcs << ',' << r.points << ',' << r.exchanged << ','
-          << dip_on(r) << ',' << (std::isfinite(r.dip_cells) ? fmt("%.1f", r.dip_cells) : std::string()) << '\n';
+          << dip_on(r) << ',' << (std::isfinite(r.dip_cells) ? fmt("%.1f", r.dip_cells) : std::string()) << ','
+          << (r.kinked ? 1 : 0) << '\n';
       timings << r.scene->key << ',' << (r.rows ? r.rows->key : "freefem") << ',' << r.n << ',' << fmt("%.3g", r.seconds) << '\n';
     }
     int failures = 0;
