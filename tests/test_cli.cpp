@@ -414,8 +414,9 @@ TEST(Cli, ThePapersLinearRunsAreRefusedAndItsNonlinearRunsCertified) {
 
 // Where the plate dips deepest, and between which rows: on the 2 x 1 lift-off scene (h = 1/32) the
 // default rows let it dip on a spline arc, at an angle where w_h, asked for as a --point of a second
-// run, lies below the rim by the dip; rows at points let it dip between points, with no arc to be
-// inside. The summary says the same as the JSON.
+// run, lies below the rim by the dip, and at most half the arc's length inside it (the arcs lie
+// about pi/2 and 3 pi/2 and are shorter than pi / 2); rows at points let it dip among points, with
+// no arc to be inside. The summary names the same rows as the JSON.
 TEST(Cli, TheDeepestDipNamesTheRowsThatLetThePlateDip) {
   const std::string json = temp_path("dip_rows.json");
   const std::string scene = "--lx 2 --ly 1 --centre 1,0.5 -n 64 ";
@@ -423,10 +424,13 @@ TEST(Cli, TheDeepestDipNamesTheRowsThatLetThePlateDip) {
   const PlateRun def = run_plate(scene + "--json " + json);
   ASSERT_EQ(def.status, 0) << def.output;
   const auto j = read_json(json);
-  ASSERT_TRUE(j.contains("dip_below_edge_theta")) << j.dump();
+  ASSERT_TRUE(j.contains("dip_below_edge_theta") && j.contains("dip_below_edge_cells_inside_arc")) << j.dump();
   EXPECT_EQ(j["dip_below_edge_rows"], "on a spline arc") << j.dump();
-  EXPECT_GE(j["dip_below_edge_cells_inside_arc"].get<double>(), 0.0) << j.dump();
-  EXPECT_NE(def.output.find("on a spline arc"), std::string::npos) << def.output;
+  const double cells = j["dip_below_edge_cells_inside_arc"].get<double>(), cell = (2.0 / 64) / 0.25;
+  EXPECT_GE(cells, 0.0) << j.dump();
+  EXPECT_LE(cells, 0.5 * (M_PI / 2) / cell) << j.dump();
+  EXPECT_NE(def.output.find("deepest at theta = "), std::string::npos) << def.output;
+  EXPECT_NE(def.output.find(", on a spline arc "), std::string::npos) << def.output;
   const double theta = j["dip_below_edge_theta"].get<double>(), dip = j["dip_below_edge"].get<double>();
   ASSERT_GT(dip, 0);
   char point[80];
@@ -439,7 +443,9 @@ TEST(Cli, TheDeepestDipNamesTheRowsThatLetThePlateDip) {
   const PlateRun points = run_plate(scene + "--edge-rows points --json " + json);
   ASSERT_EQ(points.status, 0) << points.output;
   const auto jp = read_json(json);
-  EXPECT_EQ(jp["dip_below_edge_rows"], "between point rows") << jp.dump();
+  ASSERT_TRUE(jp.contains("dip_below_edge_rows")) << jp.dump();
+  EXPECT_EQ(jp["dip_below_edge_rows"], "off the spline arcs, among point rows") << jp.dump();
   EXPECT_FALSE(jp.contains("dip_below_edge_cells_inside_arc")) << jp.dump();
+  EXPECT_NE(points.output.find(", off the spline arcs, among point rows"), std::string::npos) << points.output;
   std::filesystem::remove(json);
 }

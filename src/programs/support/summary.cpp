@@ -83,13 +83,14 @@ Json numbers(const std::vector<double>& v) {
   return a;
 }
 
-// What the line load's rows are: the knots of periodic splines (D12), splines on the contact arcs
-// and points off them (D28), or points.
-// The rows between which the plate dips deepest (Report::dip_cells).
+// The rows between which the plate dips deepest (Report::dip_cells). Off the arcs a stretch may lie
+// between an arc's end row and a point row: both count as held point by point there.
 std::string dip_rows(const Report& r) {
-  return std::isnan(r.dip_cells) ? "between point rows" : std::isinf(r.dip_cells) ? "on the periodic spline rows" : "on a spline arc";
+  return std::isnan(r.dip_cells) ? "off the spline arcs, among point rows" : std::isinf(r.dip_cells) ? "on the periodic spline rows" : "on a spline arc";
 }
 
+// What the line load's rows are: the knots of periodic splines (D12), splines on the contact arcs
+// and points off them (D28), or points.
 std::string rows_are(const LineForce& f) {
   if (f.laid_out()) return "spline bases on the contact arcs and points off them";
   return f.spline_degree > 0 ? "spline knots" : "points";
@@ -290,7 +291,7 @@ std::string summary_text(const Report& r) {
     if (std::isfinite(r.dip_below_edge))
       o << "  between the rows the plate dips at most " << summary_value(r.dip_below_edge) << " below the edge (points h/32 apart)"
         << (std::isfinite(r.dip_theta) ? ", deepest at theta = " + summary_value(r.dip_theta) + ", " + dip_rows(r) +
-                                             (std::isfinite(r.dip_cells) ? " " + summary_value(r.dip_cells) + " cells inside its end" : "")
+                                             (std::isfinite(r.dip_cells) ? " " + fmt("%.2g", r.dip_cells) + " cells inside its nearer end" : "")
                                        : std::string())
         << (r.dip_below_edge > 0 ? ": w_h is at least that far from the plate's answer there, which keeps above the obstacle" : "") << "\n";
     if (!l.fourier.empty() && l.spline_degree == 0) {
