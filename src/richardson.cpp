@@ -54,4 +54,14 @@ Extrapolation extrapolate(const std::vector<double>& v, const std::vector<double
 }
 // @end richardson
 
+double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double k = static_cast<double>(x.size());
+  for (size_t i = 0; i < x.size(); ++i) {
+    const double a = std::log(x[i]), b = std::log(y[i]);
+    sx += a, sy += b, sxx += a * a, sxy += a * b;
+  }
+  return (k * sxy - sx * sy) / (k * sxx - sx * sx);
+}
+
 }  // namespace plate

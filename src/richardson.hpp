@@ -29,4 +29,8 @@ constexpr double kSteadySpread = 0.3;
 Extrapolation extrapolate(const std::vector<double>& values, const std::vector<double>& noise = {},
                           double spread = kSteadySpread);
 
+// The least-squares slope of log y against log x: an order over many grids (x the mesh size, or
+// the unknowns) where a sequence is too irregular for the order of successive increments.
+double loglog_slope(const std::vector<double>& x, const std::vector<double>& y);
+
 }  // namespace plate

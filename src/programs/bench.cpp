@@ -25,6 +25,7 @@
 #include "fields.hpp"
 #include "format.hpp"
 #include "measurements.hpp"
+#include "richardson.hpp"
 #include "published.hpp"
 #include "schemes.hpp"
 #include "stopwatch.hpp"
@@ -170,16 +171,6 @@ double max_diff(const std::vector<double>& a, const std::vector<double>& b) {
   return m;
 }
 
-// Least-squares slope of log(y) against log(x).
-double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double k = static_cast<double>(x.size());
-  for (size_t i = 0; i < x.size(); ++i) {
-    const double a = std::log(x[i]), b = std::log(y[i]);
-    sx += a, sy += b, sxx += a * a, sxy += a * b;
-  }
-  return (k * sxy - sx * sy) / (k * sxx - sx * sx);
-}
 // The plate's max w (the rim-contact series), which lies at the centre: the errors of the centre deflection are
 // measured against it, so that bench and time_to_accuracy measure against one answer.
 struct Continuum {

@@ -449,13 +449,9 @@ void liftoff_dip_numbers(Numbers& num, const std::string& results) {
   for (const auto& [scene, rows] : by["kink"]) {
     if (rows.size() < 3) throw std::runtime_error("prose_numbers: fewer than three grids that carried the kink for " + scene + " in " + src);
     const std::size_t f = rows.back(), b = rows[rows.size() - 2];
-    double mx = 0, my = 0, sxy = 0, sxx = 0;
-    for (std::size_t r : rows) mx += std::log(t.number(r, "h")) / rows.size(), my += std::log(t.number(r, "dip")) / rows.size();
-    for (std::size_t r : rows) {
-      const double x = std::log(t.number(r, "h")) - mx;
-      sxy += x * (std::log(t.number(r, "dip")) - my), sxx += x * x;
-    }
-    fitted.add(sxy / sxx);
+    std::vector<double> h, dip;
+    for (std::size_t r : rows) h.push_back(t.number(r, "h")), dip.push_back(t.number(r, "dip"));
+    fitted.add(loglog_slope(h, dip));
     last.add(std::log(t.number(b, "dip") / t.number(f, "dip")) / std::log(t.number(b, "h") / t.number(f, "h")));
   }
   const auto one = [](double v) { return fmt("%.1f", v); };
