@@ -4,6 +4,7 @@
 
 #include <signal.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cctype>
@@ -11,12 +12,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "paper_case.hpp"
+#include "run_as_measured.hpp"
 #include "run_program.hpp"
 #include "scratch.hpp"
 
@@ -448,4 +451,45 @@ TEST(Cli, TheDeepestDipNamesTheRowsThatLetThePlateDip) {
   EXPECT_FALSE(jp.contains("dip_below_edge_cells_inside_arc")) << jp.dump();
   EXPECT_NE(points.output.find(", off the spline arcs, among point rows"), std::string::npos) << points.output;
   std::filesystem::remove(json);
+}
+
+namespace {
+// Runs run_as_measured in a child whose environment lacks the settings but for `kept` (set to
+// "7"), with `sh -c 'env > out'` as the program started again; returns what that program saw.
+std::string environment_after_run_as_measured(const std::string& out, const char* kept) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    for (const plate::MeasuredSetting& s : plate::kMeasuredSettings) unsetenv(s.name);
+    if (kept) setenv(kept, "7", 1);
+    const std::string script = "env > '" + out + "'";
+    char* argv[] = {const_cast<char*>("sh"), const_cast<char*>("-c"), const_cast<char*>(script.c_str()), nullptr};
+    plate::run_as_measured(argv, "/bin/sh");
+    _exit(3);  // only if the new start failed
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the child did not start sh again";
+  std::ifstream in(out);
+  return "\n" + std::string(std::istreambuf_iterator<char>(in), {});  // each line then starts after a newline
+}
+}  // namespace
+
+// A program run by hand runs as the Makefile runs it: each setting the caller left unset is made,
+// and one the caller made is kept.
+TEST(RunAsMeasured, SetsWhatTheCallerLeftUnsetAndKeepsTheRest) {
+  plate::Scratch dir("measured");
+  const std::string fresh = environment_after_run_as_measured(dir.path("fresh"), nullptr);
+  for (const plate::MeasuredSetting& s : plate::kMeasuredSettings)
+    EXPECT_NE(fresh.find(std::string("\n") + s.name + "=" + s.value + "\n"), std::string::npos) << s.name << " in\n" << fresh;
+  const std::string kept = environment_after_run_as_measured(dir.path("kept"), "OPENBLAS_NUM_THREADS");
+  EXPECT_NE(kept.find("\nOPENBLAS_NUM_THREADS=7\n"), std::string::npos) << kept;
+  EXPECT_NE(kept.find("\nOMP_THREAD_LIMIT=1\n"), std::string::npos) << kept;
+}
+
+// The Makefile exports the same values for every step, so results/ and a run by hand agree.
+TEST(RunAsMeasured, TheMakefileExportsTheSameSettings) {
+  std::ifstream in(std::string(PLATE_SOURCE_DIR) + "/Makefile");
+  const std::string makefile(std::istreambuf_iterator<char>(in), {});
+  for (const plate::MeasuredSetting& s : plate::kMeasuredSettings)
+    EXPECT_NE(makefile.find(std::string("\nexport ") + s.name + " ?= " + s.value + "\n"), std::string::npos) << s.name;
 }

@@ -28,6 +28,7 @@
 #include "progress.hpp"
 #include "rim_exchange.hpp"
 #include "rim_report.hpp"
+#include "run_as_measured.hpp"
 #include "stopwatch.hpp"
 #include "summary.hpp"
 
@@ -749,6 +750,7 @@ Outputs solve_series(const Options& o, Run& r, std::optional<plate::RimAnswer>& 
 
 int main(int argc, char** argv) {
   using namespace plate;
+  run_as_measured(argv);
   clean_up_on_interrupt("plate");
   CLI::App app{
       "plate: a clamped elastic plate over a rigid obstacle (V. A. Kovtunenko, 1994).\n"
