@@ -3,6 +3,7 @@
 // dips below the obstacle between rows gets a row of its own (an exchange method for a constraint on
 // a curve), until the plate dips nowhere there.
 #pragma once
+#include <cmath>
 #include <vector>
 
 #include "problem.hpp"
@@ -40,5 +41,11 @@ std::vector<double> rim_dips(const Problem& p, const VectorXd& w, double slack);
 // a spline arc, how far inside it in cells (the distance to the arc's nearer end over h / r);
 // infinity on periodic splines, which have no end; NaN off every arc, where point rows hold it.
 double cells_inside_spline_arc(const Problem& p, double theta);
+
+// Which kind of rows a value of cells_inside_spline_arc names, the one reading of its code.
+enum class RowsAt { Points, Periodic, Arc };
+inline RowsAt rows_at(double cells_inside) {
+  return std::isnan(cells_inside) ? RowsAt::Points : std::isinf(cells_inside) ? RowsAt::Periodic : RowsAt::Arc;
+}
 
 }  // namespace plate

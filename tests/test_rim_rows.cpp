@@ -152,4 +152,9 @@ TEST(RimRows, TheDeepestDipIsPlacedAmongTheRowsThatHoldThePlate) {
   EXPECT_TRUE(std::isnan(cells_inside_spline_arc(points.whole(), M_PI / 2)));
   const SceneSolution paper = solve(Scene::rectangle(1, 1).over(Cylinder{0.5, 0.5, 0.25, 0.0625}), 16, EdgeRows{});
   EXPECT_TRUE(std::isinf(cells_inside_spline_arc(paper.whole(), M_PI / 2)));
+  // The reports read the three kinds through rows_at alone.
+  EXPECT_EQ(rows_at(cells_inside_spline_arc(points.whole(), M_PI / 2)), RowsAt::Points);
+  EXPECT_EQ(rows_at(cells_inside_spline_arc(paper.whole(), M_PI / 2)), RowsAt::Periodic);
+  EXPECT_EQ(rows_at(cells_inside_spline_arc(q, 3.0)), RowsAt::Arc);
+  EXPECT_EQ(rows_at(cells_inside_spline_arc(q, 0.0)), RowsAt::Arc);  // an arc's row a tenth of a cell in is still on it
 }

@@ -129,7 +129,12 @@ Run freefem(const Case& s, int m, const std::string& work) {
 // Which rows failed to hold the plate where it dips deepest (empty: it dips nowhere, or FreeFEM).
 std::string dip_on(const Run& r) {
   if (!(r.dip > 0)) return "";
-  return std::isnan(r.dip_cells) ? "points" : std::isinf(r.dip_cells) ? "periodic" : "arc";
+  switch (rows_at(r.dip_cells)) {
+    case RowsAt::Points: return "points";
+    case RowsAt::Periodic: return "periodic";
+    case RowsAt::Arc: return "arc";
+  }
+  return "";
 }
 
 // The same in words, for the report.

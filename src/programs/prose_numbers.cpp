@@ -428,15 +428,15 @@ void liftoff_dip_numbers(Numbers& num, const std::string& results) {
       ++solves, on_arcs += t.text(r, "dip_on") == "arc";
       by[rows][t.text(r, "scene")].push_back(r);
     }
+  // Each scene's runs coarse to fine: both loops below read the finest as the last.
+  for (auto& [rows, scenes] : by)
+    for (auto& [scene, runs] : scenes)
+      std::sort(runs.begin(), runs.end(), [&](std::size_t a, std::size_t b) { return t.number(a, "h") > t.number(b, "h"); });
   num.put("liftoff.default_solves", std::to_string(solves), src + " default rows and kink rows that carried the kink: runs");
   num.put("liftoff.dips_on_arcs", std::to_string(on_arcs), src + " the same runs with dip_on = arc");
-  const auto by_h = [&](std::vector<std::size_t>& rows) {
-    std::sort(rows.begin(), rows.end(), [&](std::size_t a, std::size_t b) { return t.number(a, "h") > t.number(b, "h"); });
-  };
   for (const char* rows : {"default", "kink"}) {
     Range cells;
-    for (auto& [scene, runs] : by[rows]) {
-      by_h(runs);
+    for (const auto& [scene, runs] : by[rows]) {
       if (t.text(runs.back(), "dip_on") != "arc")
         throw std::runtime_error("prose_numbers: the finest " + std::string(rows) + " run of " + scene + " in " + src +
                                  " does not dip deepest on a spline arc, which the document's paragraph on the dip assumes");

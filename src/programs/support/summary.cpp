@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "format.hpp"
+#include "rim_exchange.hpp"
 
 namespace plate {
 
@@ -86,7 +87,12 @@ Json numbers(const std::vector<double>& v) {
 // The rows between which the plate dips deepest (Report::dip_cells). Off the arcs a stretch may lie
 // between an arc's end row and a point row: both count as held point by point there.
 std::string dip_rows(const Report& r) {
-  return std::isnan(r.dip_cells) ? "off the spline arcs, among point rows" : std::isinf(r.dip_cells) ? "on the periodic spline rows" : "on a spline arc";
+  switch (rows_at(r.dip_cells)) {
+    case RowsAt::Points: return "off the spline arcs, among point rows";
+    case RowsAt::Periodic: return "on the periodic spline rows";
+    case RowsAt::Arc: return "on a spline arc";
+  }
+  return "";
 }
 
 // What the line load's rows are: the knots of periodic splines (D12), splines on the contact arcs
