@@ -156,5 +156,5 @@ TEST(RimRows, TheDeepestDipIsPlacedAmongTheRowsThatHoldThePlate) {
   EXPECT_EQ(rows_at(cells_inside_spline_arc(points.whole(), M_PI / 2)), RowsAt::Points);
   EXPECT_EQ(rows_at(cells_inside_spline_arc(paper.whole(), M_PI / 2)), RowsAt::Periodic);
   EXPECT_EQ(rows_at(cells_inside_spline_arc(q, 3.0)), RowsAt::Arc);
-  EXPECT_EQ(rows_at(cells_inside_spline_arc(q, 0.0)), RowsAt::Arc);  // an arc's row a tenth of a cell in is still on it
+  EXPECT_EQ(rows_at(cells_inside_spline_arc(q, 0.0)), RowsAt::Arc);  // the arc across theta = 0
 }
