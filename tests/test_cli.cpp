@@ -454,36 +454,58 @@ TEST(Cli, TheDeepestDipNamesTheRowsThatLetThePlateDip) {
 }
 
 namespace {
-// Runs run_as_measured in a child whose environment lacks the settings but for `kept` (set to
-// "7"), with `sh -c 'env > out'` as the program started again; returns what that program saw.
-std::string environment_after_run_as_measured(const std::string& out, const char* kept) {
+// Runs run_as_measured in a child whose environment lacks the settings and OMP_NUM_THREADS but for
+// `preset` (each set to "7"), with /usr/bin/env (its output sent to `out`) as the program started
+// again under the name `name`. Returns what that program printed and the child's exit status: 0
+// when env ran, 3 when run_as_measured returned.
+std::pair<std::string, int> run_as_measured_in_child(const std::string& out, std::vector<const char*> preset, const char* name = "env") {
   const pid_t pid = fork();
+  if (pid < 0) {
+    ADD_FAILURE() << "fork failed";
+    return {"", -1};
+  }
   if (pid == 0) {
     for (const plate::MeasuredSetting& s : plate::kMeasuredSettings) unsetenv(s.name);
-    if (kept) setenv(kept, "7", 1);
-    const std::string script = "env > '" + out + "'";
-    char* argv[] = {const_cast<char*>("sh"), const_cast<char*>("-c"), const_cast<char*>(script.c_str()), nullptr};
-    plate::run_as_measured(argv, "/bin/sh");
-    _exit(3);  // only if the new start failed
+    unsetenv("OMP_NUM_THREADS"), unsetenv("GOTO_NUM_THREADS");
+    for (const char* p : preset) setenv(p, "7", 1);
+    if (!std::freopen(out.c_str(), "w", stdout)) _exit(4);
+    char* argv[] = {const_cast<char*>(name), nullptr};
+    plate::run_as_measured(argv, "/usr/bin/env");
+    _exit(3);  // run_as_measured returned
   }
   int status = 0;
-  waitpid(pid, &status, 0);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the child did not start sh again";
+  EXPECT_EQ(waitpid(pid, &status, 0), pid);
+  EXPECT_TRUE(WIFEXITED(status));
   std::ifstream in(out);
-  return "\n" + std::string(std::istreambuf_iterator<char>(in), {});  // each line then starts after a newline
+  return {"\n" + std::string(std::istreambuf_iterator<char>(in), {}), WEXITSTATUS(status)};  // each line then starts after a newline
 }
+bool has(const std::string& env, const std::string& line) { return env.find("\n" + line + "\n") != std::string::npos; }
 }  // namespace
 
 // A program run by hand runs as the Makefile runs it: each setting the caller left unset is made,
-// and one the caller made is kept.
-TEST(RunAsMeasured, SetsWhatTheCallerLeftUnsetAndKeepsTheRest) {
+// one the caller made is kept, and a thread count chosen through OMP_NUM_THREADS keeps both.
+TEST(RunAsMeasured, SetsWhatTheCallerLeftUnsetAndKeepsTheCallersChoices) {
   plate::Scratch dir("measured");
-  const std::string fresh = environment_after_run_as_measured(dir.path("fresh"), nullptr);
-  for (const plate::MeasuredSetting& s : plate::kMeasuredSettings)
-    EXPECT_NE(fresh.find(std::string("\n") + s.name + "=" + s.value + "\n"), std::string::npos) << s.name << " in\n" << fresh;
-  const std::string kept = environment_after_run_as_measured(dir.path("kept"), "OPENBLAS_NUM_THREADS");
-  EXPECT_NE(kept.find("\nOPENBLAS_NUM_THREADS=7\n"), std::string::npos) << kept;
-  EXPECT_NE(kept.find("\nOMP_THREAD_LIMIT=1\n"), std::string::npos) << kept;
+  const auto [fresh, fresh_status] = run_as_measured_in_child(dir.path("fresh"), {});
+  EXPECT_EQ(fresh_status, 0);
+  for (const plate::MeasuredSetting& s : plate::kMeasuredSettings) EXPECT_TRUE(has(fresh, std::string(s.name) + "=" + s.value)) << s.name << " in\n" << fresh;
+  const auto [kept, kept_status] = run_as_measured_in_child(dir.path("kept"), {"OPENBLAS_NUM_THREADS"});
+  EXPECT_EQ(kept_status, 0);
+  EXPECT_TRUE(has(kept, "OPENBLAS_NUM_THREADS=7")) << kept;
+  EXPECT_TRUE(has(kept, "OMP_THREAD_LIMIT=1")) << kept;
+  const auto [omp, omp_status] = run_as_measured_in_child(dir.path("omp"), {"OMP_NUM_THREADS"});
+  EXPECT_EQ(omp_status, 0);
+  EXPECT_EQ(omp.find("\nOMP_THREAD_LIMIT="), std::string::npos) << omp;
+  EXPECT_EQ(omp.find("\nOPENBLAS_NUM_THREADS="), std::string::npos) << omp;
+  EXPECT_TRUE(has(omp, std::string("GLIBC_TUNABLES=") + plate::kMeasuredSettings[2].value)) << omp;
+}
+
+// Nothing is started again when nothing is left to set (so it cannot loop), nor when the running
+// executable is not the program argv[0] names (plate run through the loader or valgrind).
+TEST(RunAsMeasured, ReturnsWhenAllIsSetOrTheExecutableIsAnother) {
+  plate::Scratch dir("measured");
+  EXPECT_EQ(run_as_measured_in_child(dir.path("all"), {"OMP_THREAD_LIMIT", "OPENBLAS_NUM_THREADS", "GLIBC_TUNABLES"}).second, 3);
+  EXPECT_EQ(run_as_measured_in_child(dir.path("other"), {}, "plate").second, 3);
 }
 
 // The Makefile exports the same values for every step, so results/ and a run by hand agree.
