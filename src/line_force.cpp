@@ -40,7 +40,7 @@ void refine_extremes(LineForce& f) {
     double top = -INFINITY;
     for (double q : sampled) top = std::max(top, sign * q);
     int best = 0;
-    while (sign * sampled[best] < top - kTie * largest) ++best;
+    while (best + 1 < angles && !(sign * sampled[best] >= top - kTie * largest)) ++best;  // NaN samples are passed over
     double lo = (best - 1) * step, hi = (best + 1) * step;
     double a = hi - ratio * (hi - lo), b = lo + ratio * (hi - lo);
     double fa = sign * line_force_value(f, a), fb = sign * line_force_value(f, b);
@@ -51,7 +51,8 @@ void refine_extremes(LineForce& f) {
     const double here = sign * sampled[best];
     const double t = std::max(fa, fb) > here ? (fa > fb ? a : b) : best * step;
     const double v = sign * std::max({fa, fb, here});
-    // A row's own value (summarise) may pass the closed-in one by round-off at a tied copy.
+    // A row's own value (summarise) may pass the closed-in one at a tied copy: the value then stays
+    // the row's, and the angle, the tie's first, may lie up to kTie away in q from where it is reached.
     if (sign > 0 && v >= f.max - kTie * largest) f.max = std::max(f.max, v), f.theta_max = std::remainder(t, 2 * M_PI);
     if (sign < 0 && v <= f.min + kTie * largest) f.min = std::min(f.min, v), f.theta_min = std::remainder(t, 2 * M_PI);
   }

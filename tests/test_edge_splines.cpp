@@ -94,7 +94,9 @@ TEST(EdgeSplines, ExtremesTiedBySymmetryAreNamedAtTheFirstAngle) {
   EXPECT_NEAR(a.line.theta_min, M_PI / 4, 1e-6);
   EXPECT_NEAR(a.line.theta_max, 0.0, 1e-6);
   const Sampling& s = a.p.sampling;
-  ASSERT_EQ(s.edge_knots % 4, 0);
+  ASSERT_EQ(s.edge_knots % 8, 0);  // knots at 2 pi j / K: 3 pi/4 and pi/2 are knots
+  ASSERT_NEAR(s.edge.theta[3 * s.edge_knots / 8], 3 * M_PI / 4, 1e-12);
+  ASSERT_NEAR(s.edge.theta[s.edge_knots / 4], M_PI / 2, 1e-12);
   for (double tilt : {1 - 1e-12, 1 + 1e-12}) {
     VectorXd lambda = a.x.lambda;
     lambda[s.edge_begin + 3 * s.edge_knots / 8] *= tilt;  // the knot at 3 pi/4

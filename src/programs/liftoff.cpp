@@ -263,7 +263,7 @@ int main(int argc, char** argv) {
       csv << r.scene->key << ',' << (r.rows ? r.rows->key : "freefem") << ',' << r.n << ',' << fmt("%.6g", r.h) << ',' << (r.certified ? 1 : 0) << ','
           << fmt_value(r.max_w, r.noise_w, 12, "nan") << ',' << fmt_value(r.force, r.noise_force, 12, "nan") << ','
           << (std::isfinite(r.dip) ? fmt("%.2e", r.dip) : std::string()) << ',' << r.arcs << ',' << r.points << ',' << r.exchanged << ','
-          << dip_on(r) << ',' << (std::isfinite(r.dip_cells) ? fmt("%.1f", r.dip_cells) : std::string()) << ','
+          << dip_on(r) << ',' << (rows_at(r.dip_cells) == RowsAt::Arc ? fmt("%.1f", r.dip_cells) : std::string()) << ','
           << (r.kinked ? 1 : 0) << '\n';
       timings << r.scene->key << ',' << (r.rows ? r.rows->key : "freefem") << ',' << r.n << ',' << fmt("%.3g", r.seconds) << '\n';
     }

@@ -236,7 +236,7 @@ std::string summary_json(const Report& r) {
   if (std::isfinite(r.dip_theta)) {
     j["dip_below_edge_theta"] = number(r.dip_theta);
     j["dip_below_edge_rows"] = dip_rows(r);
-    if (std::isfinite(r.dip_cells)) j["dip_below_edge_cells_inside_arc"] = number(r.dip_cells);
+    if (rows_at(r.dip_cells) == RowsAt::Arc) j["dip_below_edge_cells_inside_arc"] = number(r.dip_cells);
   }
   check_json(j, r);
   // What each bound is about: the certificate, the discrete answer; the error bars, the plate's.
@@ -297,7 +297,7 @@ std::string summary_text(const Report& r) {
     if (std::isfinite(r.dip_below_edge))
       o << "  between the rows the plate dips at most " << summary_value(r.dip_below_edge) << " below the edge (points h/32 apart)"
         << (std::isfinite(r.dip_theta) ? ", deepest at theta = " + summary_value(r.dip_theta) + ", " + dip_rows(r) +
-                                             (std::isfinite(r.dip_cells) ? " " + fmt("%.2g", r.dip_cells) + " cells inside its nearer end" : "")
+                                             (rows_at(r.dip_cells) == RowsAt::Arc ? " " + fmt("%.2g", r.dip_cells) + " cells inside its nearer end" : "")
                                        : std::string())
         << (r.dip_below_edge > 0 ? ": w_h is at least that far from the plate's answer there, which keeps above the obstacle" : "") << "\n";
     if (!l.fourier.empty() && l.spline_degree == 0) {
