@@ -224,7 +224,7 @@ struct CellBlocks {
   std::vector<double> r, wt;  // each point: radius and weight
   std::vector<int> ray;       // and the ray it lies on
   // Kept from cell to cell, so that no point allocates.
-  Eigen::MatrixXd basis, lap_phi, D, psi, lap_psi, weighted;
+  Eigen::MatrixXd basis, D, psi, lap_psi, weighted;
   VectorXd load;
   void reset() {
     met.clear(), Pl.setZero(16, 8);
@@ -263,13 +263,13 @@ static void add_profile(const Radial& g, const Spline3& S, double ir, double* d)
 static void cell_blocks(const Grid& g, const KinkEnrichment& e, const Field& f, double x0, double y0, CellBlocks& cb,
                         Eigen::MatrixXd& Bl, Eigen::MatrixXd& El, VectorXd& fl) {
   const int np = static_cast<int>(cb.r.size()), L = static_cast<int>(cb.met.size());
-  cb.basis.resize(16, 3 * np), cb.lap_phi.resize(16, np), cb.load.resize(np);
+  cb.basis.resize(16, 3 * np), cb.load.resize(np);
   for (int p = 0; p < np; ++p) {
     const CellBlocks::Ray& ray = cb.rays[cb.ray[p]];
     const double x = e.cx + cb.r[p] * ray.cs, y = e.cy + cb.r[p] * ray.sn;
     const LocalBasis lb = bfs_basis((x - x0) / g.h, (y - y0) / g.h, g.h);
     cb.basis.col(3 * p) = lb.v, cb.basis.col(3 * p + 1) = ray.cs * lb.dx + ray.sn * lb.dy;
-    cb.basis.col(3 * p + 2) = cb.lap_phi.col(p) = lb.dxx + lb.dyy;
+    cb.basis.col(3 * p + 2) = lb.dxx + lb.dyy;
     cb.load[p] = cb.wt[p] * f(x, y);
   }
   // D = F - I_h F at every point: first minus the interpolant's share, for all functions at once.
@@ -290,7 +290,9 @@ static void cell_blocks(const Grid& g, const KinkEnrichment& e, const Field& f, 
     }
   }
   cb.weighted.noalias() = cb.lap_psi * Eigen::Map<const VectorXd>(cb.wt.data(), np).asDiagonal();
-  Bl.noalias() = cb.lap_phi * cb.weighted.transpose();
+  // Lap phi_i at each point is every third column of the basis rows, read in place.
+  const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> lap_phi(cb.basis.data() + 2 * 16, 16, np, Eigen::OuterStride<>(3 * 16));
+  Bl.noalias() = lap_phi * cb.weighted.transpose();
   El.noalias() = cb.weighted * cb.lap_psi.transpose();
   fl.noalias() = cb.psi * cb.load;
 }
