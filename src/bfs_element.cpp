@@ -7,6 +7,11 @@
 namespace plate {
 
 namespace {
+// Function 4 a + c (corner a, component c) is the product of 1D cubics ix(k) in x and iy(k) in y,
+// each indexed 2 * end + kind: the corner's end in that direction, the component's order there.
+constexpr int x_index(int a, int c) { return 2 * (a & 1) + (c & 1); }
+constexpr int y_index(int a, int c) { return 2 * (a >> 1) + (c >> 1); }
+
 // The basis in any precision: T is double, or long double for iterative refinement.
 template <class T>
 LocalBasisT<T> basis(T t, T s, T h) {
@@ -14,8 +19,7 @@ LocalBasisT<T> basis(T t, T s, T h) {
   LocalBasisT<T> b;
   for (int a = 0; a < 4; ++a)
     for (int c = 0; c < 4; ++c) {
-      // 1D index 2 * end + kind: the corner's end in each direction, the component's order.
-      const int ix = 2 * (a & 1) + (c & 1), iy = 2 * (a >> 1) + (c >> 1);
+      const int ix = x_index(a, c), iy = y_index(a, c);
       const int k = 4 * a + c;
       b.v[k] = X.d0[ix] * Y.d0[iy];
       b.dx[k] = X.d1[ix] * Y.d0[iy];
@@ -42,6 +46,37 @@ Eigen::Matrix<T, 16, 16> integrate_gram(T h, Pick pick) {
 }  // namespace
 
 LocalBasis bfs_basis(double t, double s, double h) { return basis(t, s, h); }
+
+Vector16 bfs_values(double t, double s, double h) {
+  const Hermite1D X = hermite_physical(t, h), Y = hermite_physical(s, h);
+  Vector16 v;
+  for (int a = 0; a < 4; ++a)
+    for (int c = 0; c < 4; ++c) v[4 * a + c] = X.d0[x_index(a, c)] * Y.d0[y_index(a, c)];
+  return v;
+}
+
+void bfs_basis_along(double t, double s, double h, double c, double sn, double* out) {
+  // hermite_physical's eight divisions, as products with 1 / h: a tenth of the blocks' time.
+  const double ih = 1 / h, ih2 = ih * ih;
+  auto physical = [&](double u) {
+    Hermite1D r = hermite_cubics(u);
+    for (int k = 0; k < 4; ++k) {
+      const bool slope = k & 1;
+      r.d0[k] *= slope ? h : 1.0;
+      r.d1[k] *= slope ? 1.0 : ih;
+      r.d2[k] *= slope ? ih : ih2;
+    }
+    return r;
+  };
+  const Hermite1D X = physical(t), Y = physical(s);
+  for (int a = 0; a < 4; ++a)
+    for (int k = 0; k < 4; ++k) {
+      const int ix = x_index(a, k), iy = y_index(a, k), i = 4 * a + k;
+      out[i] = X.d0[ix] * Y.d0[iy];
+      out[16 + i] = c * (X.d1[ix] * Y.d0[iy]) + sn * (X.d0[ix] * Y.d1[iy]);
+      out[32 + i] = X.d2[ix] * Y.d0[iy] + X.d0[ix] * Y.d2[iy];
+    }
+}
 
 // @region bfs-stiffness
 // Eq. (8), first term: the element matrix of (Lap u_h, Lap v_h).

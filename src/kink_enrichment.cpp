@@ -223,9 +223,14 @@ struct CellBlocks {
   std::vector<Ray> rays;
   std::vector<double> r, wt;  // each point: radius and weight
   std::vector<int> ray;       // and the ray it lies on
-  // Kept from cell to cell, so that no point allocates.
+  // Kept from cell to cell and only ever grown, so that no cell allocates: resized to each cell's
+  // points, they made a third of the blocks' time stores to fresh pages.
   Eigen::MatrixXd basis, D, psi, lap_psi, weighted;
   VectorXd load;
+  static Eigen::Block<Eigen::MatrixXd> first(Eigen::MatrixXd& m, Eigen::Index rows, Eigen::Index cols) {
+    if (m.rows() < rows || m.cols() < cols) m.resize(std::max(rows, m.rows()), std::max(cols, m.cols()));
+    return m.topLeftCorner(rows, cols);
+  }
   void reset() {
     met.clear(), Pl.setZero(16, 8);
     rays.clear(), r.clear(), wt.clear(), ray.clear();
@@ -263,18 +268,17 @@ static void add_profile(const Radial& g, const Spline3& S, double ir, double* d)
 static void cell_blocks(const Grid& g, const KinkEnrichment& e, const Field& f, double x0, double y0, CellBlocks& cb,
                         Eigen::MatrixXd& Bl, Eigen::MatrixXd& El, VectorXd& fl) {
   const int np = static_cast<int>(cb.r.size()), L = static_cast<int>(cb.met.size());
-  cb.basis.resize(16, 3 * np), cb.load.resize(np);
+  auto basis = CellBlocks::first(cb.basis, 16, 3 * np);
+  if (cb.load.size() < np) cb.load.resize(np);
   for (int p = 0; p < np; ++p) {
     const CellBlocks::Ray& ray = cb.rays[cb.ray[p]];
     const double x = e.cx + cb.r[p] * ray.cs, y = e.cy + cb.r[p] * ray.sn;
-    const LocalBasis lb = bfs_basis((x - x0) / g.h, (y - y0) / g.h, g.h);
-    cb.basis.col(3 * p) = lb.v, cb.basis.col(3 * p + 1) = ray.cs * lb.dx + ray.sn * lb.dy;
-    cb.basis.col(3 * p + 2) = lb.dxx + lb.dyy;
+    bfs_basis_along((x - x0) / g.h, (y - y0) / g.h, g.h, ray.cs, ray.sn, &basis(0, 3 * p));
     cb.load[p] = cb.wt[p] * f(x, y);
   }
   // D = F - I_h F at every point: first minus the interpolant's share, for all functions at once.
-  cb.D.noalias() = -cb.basis.transpose() * cb.Pl.leftCols(L);  // 3 rows per point, one column per function
-  cb.psi.resize(L, np), cb.lap_psi.resize(L, np);
+  CellBlocks::first(cb.D, 3 * np, L).noalias() = -basis.transpose() * cb.Pl.leftCols(L);  // 3 rows per point, one column per function
+  auto psi = CellBlocks::first(cb.psi, L, np), lap_psi = CellBlocks::first(cb.lap_psi, L, np);
   for (int p = 0; p < np; ++p) {
     const CellBlocks::Ray& ray = cb.rays[cb.ray[p]];
     const double r = cb.r[p];
@@ -286,15 +290,16 @@ static void cell_blocks(const Grid& g, const KinkEnrichment& e, const Field& f, 
     const double lapchi = chi.g2 + chi.g1 / r;
     for (int l = 0; l < L; ++l) {
       const double* d = &cb.D(3 * p, l);
-      cb.psi(l, p) = chi.g * d[0], cb.lap_psi(l, p) = chi.g * d[2] + 2 * chi.g1 * d[1] + d[0] * lapchi;
+      psi(l, p) = chi.g * d[0], lap_psi(l, p) = chi.g * d[2] + 2 * chi.g1 * d[1] + d[0] * lapchi;
     }
   }
-  cb.weighted.noalias() = cb.lap_psi * Eigen::Map<const VectorXd>(cb.wt.data(), np).asDiagonal();
+  auto weighted = CellBlocks::first(cb.weighted, L, np);
+  weighted.noalias() = lap_psi * Eigen::Map<const VectorXd>(cb.wt.data(), np).asDiagonal();
   // Lap phi_i at each point is every third column of the basis rows, read in place.
   const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> lap_phi(cb.basis.data() + 2 * 16, 16, np, Eigen::OuterStride<>(3 * 16));
-  Bl.noalias() = lap_phi * cb.weighted.transpose();
-  El.noalias() = cb.weighted * cb.lap_psi.transpose();
-  fl.noalias() = cb.psi * cb.load;
+  Bl.noalias() = lap_phi * weighted.transpose();
+  El.noalias() = weighted * lap_psi.transpose();
+  fl.noalias() = psi * cb.load.head(np);
 }
 
 // Eq. (D31)'s blocks, cell by cell over the cells that reach the band where chi is not 0, in polar coordinates
@@ -312,7 +317,10 @@ KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const Sp
   // (Lap psi_k, Lap psi_l) 2e-8 off a 16-point rule on the paper's scene at n = 64 (6 leave 1e-4).
   // In the angle a ray's ends move with it, which matters most across the cut-off's high powers of
   // r: 6 points there leave that block 3e-6 off, 8 do not; on the two inner parts 6 points leave the
-  // border 9e-10 off the 16-point rule (2e-11 with 8 everywhere) for a quarter less time.
+  // border 9e-10 off the 16-point rule (2e-11 with 8 everywhere) for a quarter less time. (6 there
+  // would let all three parts share rays, a sixth of the blocks' time, and move max w and the force
+  // by at most 2e-11 at n = 32 and 4e-14 from n = 64 on; but the load (f, psi_k) then lies 4e-7 off
+  // the brute-force rule of test_kink_enrichment, where 8 hold it within that rule's own error.)
   Quadrature1D qa[3], qr[3];
   for (int part = 0; part < 3; ++part) qa[part] = gauss_legendre(kKinkRule[part].angle), qr[part] = gauss_legendre(kKinkRule[part].radius);
   const RowSpMat P = interpolant;  // rows: a node's unknowns
@@ -388,9 +396,16 @@ KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const Sp
 
 bool kink_near(const KinkEnrichment& e, double x, double y) {
   // Deeper inside than any square the rim cuts (within sqrt(2) < kKinkFlatCells cells of it), and
-  // beyond the cut-off, psi_k is zero.
-  const double d = std::hypot(x - e.cx, y - e.cy) - e.a;
-  return d > -e.inner && d < e.outer;
+  // beyond the cut-off, psi_k is zero. Every field read asks this, so the squared distance is
+  // compared with the band's squared radii: std::hypot took 2% of `plate -n 64`. Past 1e150 the
+  // squares could overflow, and hypot decides.
+  const double dx = x - e.cx, dy = y - e.cy, lo = e.a - e.inner, hi = e.a + e.outer;
+  if (!(std::abs(dx) < 1e150 && std::abs(dy) < 1e150 && hi < 1e150)) {
+    const double d = std::hypot(dx, dy) - e.a;
+    return d > -e.inner && d < e.outer;
+  }
+  const double s = dx * dx + dy * dy;
+  return (lo <= 0 || s > lo * lo) && s < hi * hi;
 }
 
 KinkValue kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y) {
@@ -419,6 +434,19 @@ KinkValue kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue
   out.wyy += 2 * cy * D.wy + cyy * D.w;
   out.wxy += cx * D.wy + cy * D.wx + cxy * D.w;
   return out;
+}
+
+double kink_value(const KinkEnrichment& e, const VectorXd& c, double interpolant, double x, double y) {
+  if (!kink_near(e, x, y)) return 0;
+  const double dx = x - e.cx, dy = y - e.cy, r = std::hypot(dx, dy);
+  double D = -interpolant;
+  if (r > e.a) {
+    const Radial F = kink_radial(r - e.a, e.a);
+    const double th = std::atan2(dy, dx);
+    const SplinesAt sp = splines_at(e, th < 0 ? th + 2 * M_PI : th);
+    for (int i = 0; i < sp.count; ++i) D += c[e.function_of_spline[sp.j[i]]] * (F.g * sp.b[i].v);
+  }
+  return cutoff(e, r - e.a).g * D;
 }
 
 KinkEnrichment unfold_kink(const KinkEnrichment& part, const VectorXd& c_part, VectorXd& c_whole) {

@@ -98,6 +98,8 @@ bool kink_near(const KinkEnrichment& e, double x, double y);
 // functions with coefficients P c (the interpolant of sum_k c_k F_k, which the caller reads from the
 // grid: contact.hpp's PlateField, across mirror lines too): the enrichment's share of the field.
 KinkValue kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y);
+// Its value alone (kink_field's w, the same number), given the interpolant's value there.
+double kink_value(const KinkEnrichment& e, const VectorXd& c, double interpolant, double x, double y);
 
 // The enrichment of a part (mirror.hpp) on the whole plate: every spline its own function, its
 // coefficient that of the part's function it belongs to.

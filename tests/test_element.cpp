@@ -2,6 +2,7 @@
 // bicubic, and its matrices must give the exact integrals of (Lap p)^2 and p^2 for bicubics p.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "assemble.hpp"
@@ -101,6 +102,31 @@ TEST(BfsElement, ReproducesEveryBicubicAndItsDerivatives) {
         EXPECT_NEAR(c.dot(b.dxy), px.dy()(x, y), 1e-11);
         EXPECT_NEAR(c.dot(b.dyy), py.dy()(x, y), 1e-11);
       }
+  }
+}
+
+// The two partial reads of the basis agree with the whole one: bfs_values to the bit, and
+// bfs_basis_along (which multiplies by 1 / h where the whole one divides by h) to a few units in
+// the last place, on a cell whose side is not a power of two.
+TEST(BfsElement, PartialReadsOfTheBasisAreTheWholeOnesNumbers) {
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> u(0, 1), a(0, 2 * M_PI);
+  for (double h : {0.3, 1.0 / 64}) {
+    for (int k = 0; k < 50; ++k) {
+      const double t = u(gen), s = u(gen), th = a(gen), c = std::cos(th), sn = std::sin(th);
+      const LocalBasis b = bfs_basis(t, s, h);
+      const Vector16 v = bfs_values(t, s, h);
+      double along[48];
+      bfs_basis_along(t, s, h, c, sn, along);
+      const double slope_size = b.dx.cwiseAbs().maxCoeff() + b.dy.cwiseAbs().maxCoeff();
+      const double lap_size = b.dxx.cwiseAbs().maxCoeff() + b.dyy.cwiseAbs().maxCoeff();
+      for (int i = 0; i < 16; ++i) {
+        EXPECT_EQ(v[i], b.v[i]);
+        EXPECT_NEAR(along[i], b.v[i], 4e-16);
+        EXPECT_NEAR(along[16 + i], c * b.dx[i] + sn * b.dy[i], 1e-15 * slope_size);
+        EXPECT_NEAR(along[32 + i], b.dxx[i] + b.dyy[i], 1e-15 * lap_size);
+      }
+    }
   }
 }
 
