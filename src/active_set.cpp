@@ -31,7 +31,7 @@ NodeSet predict_active(const Problem& coarse, const VectorXd& wc, const Problem&
   const PlateField field(coarse, wc);
   for (int q = 0; q < fine.phi.size(); ++q) {
     if (!std::isfinite(fine.phi[q])) continue;
-    const double w = field.at(fine.sampling.x[q], fine.sampling.y[q]).w;
+    const double w = field.value_at(fine.sampling.x[q], fine.sampling.y[q]);
     A[q] = w <= fine.phi[q] + margin;
   }
   return A;

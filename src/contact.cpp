@@ -16,16 +16,26 @@ PointValues evaluate_in(const Grid& g, const VectorXd& w, int ex, int ey, double
   for (int k = 0; k < 16; ++k) c[k] = dofs[k] >= 0 ? w[dofs[k]] : 0.0;
   return {c.dot(b.v), c.dot(b.dx), c.dot(b.dy), c.dot(b.dxx), c.dot(b.dxy), c.dot(b.dyy)};
 }
+
+double value_in(const Grid& g, const VectorXd& w, int ex, int ey, double t, double s) {
+  const auto dofs = g.element_dofs(ex, ey);
+  Vector16 c;
+  for (int k = 0; k < 16; ++k) c[k] = dofs[k] >= 0 ? w[dofs[k]] : 0.0;
+  return c.dot(bfs_values(t, s, g.h));
+}
+
+void locate_or_throw(const Grid& g, double x, double y, int& ex, int& ey, double& t, double& s, int& flips) {
+  if (g.locate(x, y, ex, ey, t, s, &flips)) return;
+  std::ostringstream m;
+  m << "point (" << x << ", " << y << ") is outside the plate [0, " << g.whole_lx() << "] x [0, " << g.whole_ly() << "]";
+  throw std::invalid_argument(m.str());
+}
 }  // namespace
 
 PointValues evaluate(const Grid& g, const VectorXd& w, double x, double y) {
   int ex, ey, flips = 0;
   double t, s;
-  if (!g.locate(x, y, ex, ey, t, s, &flips)) {
-    std::ostringstream m;
-    m << "point (" << x << ", " << y << ") is outside the plate [0, " << g.whole_lx() << "] x [0, " << g.whole_ly() << "]";
-    throw std::invalid_argument(m.str());
-  }
+  locate_or_throw(g, x, y, ex, ey, t, s, flips);
   PointValues v = evaluate_in(g, w, ex, ey, t, s);
   // The mirror image of a symmetric plate: slopes across the line change sign, and w_xy with each.
   if (flips & 1) v.wx = -v.wx, v.wxy = -v.wxy;
@@ -93,6 +103,17 @@ PointValues PlateField::at(double x, double y) const {
   return p_.kink || !p_.ends.empty() ? plus(v, enrichment_at(x, y)) : v;
 }
 
+double PlateField::value_at(double x, double y) const {
+  if (!p_.ends.empty()) return at(x, y).w;
+  int ex, ey, flips = 0;
+  double t, s;
+  locate_or_throw(p_.grid, x, y, ex, ey, t, s, flips);
+  const double v = value_in(p_.grid, w_, ex, ey, t, s);  // a mirror image's value is the point's own
+  if (!p_.kink) return v;
+  if (!kink_near(*p_.kink, x, y)) return v + 0.0;  // as at() adds the enrichment's zero
+  return v + kink_value(*p_.kink, c_, value_in(p_.grid, Pc_, ex, ey, t, s), x, y);
+}
+
 PointValues evaluate(const Problem& p, const VectorXd& w, double x, double y) { return PlateField(p, w).at(x, y); }
 
 // @region moments
@@ -148,7 +169,7 @@ EdgeDip deepest_dip_below_edge(const Problem& p, const VectorXd& w) {
   const PlateField field(p, w);
   for (int k = 0; k < e.size(); ++k) {
     const double phi = obstacle_on_edge(obstacle, e.x[k], e.y[k], e.nx[k], e.ny[k], p.grid.h);
-    const double below = std::isfinite(phi) ? phi - field.at(e.x[k], e.y[k]).w : 0.0;
+    const double below = std::isfinite(phi) ? phi - field.value_at(e.x[k], e.y[k]) : 0.0;
     if (below > dip.depth) dip = {below, e.theta.empty() ? NAN : e.theta[k]};
   }
   return dip;

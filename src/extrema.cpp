@@ -78,7 +78,7 @@ Extremum extremum_of_w(const Grid& g, const VectorXd& w, double sign, int starts
 FieldMeasures measure_field(const Problem& p, const VectorXd& w, double nu, const std::vector<std::pair<double, double>>& points) {
   FieldMeasures m;
   const PlateField field(p, w);
-  for (const auto& [x, y] : points) m.w_at.push_back(field.at(x, y).w);
+  for (const auto& [x, y] : points) m.w_at.push_back(field.value_at(x, y));
   m.max_w = extremum_of_w(p, w, +1);
   m.min_w = extremum_of_w(p, w, -1);
   // |m12| = (1 - nu) |w_xy|, continuous for these elements: from the best node, by the pattern.

@@ -85,7 +85,7 @@ std::vector<double> rim_dips(const Problem& p, const VectorXd& w, double slack) 
   auto gap = [&](double t) {
     double x, y;
     point(t, x, y);
-    return field.at(x, y).w - obstacle_on_edge(obstacle, x, y, -std::cos(t), -std::sin(t), g.h);
+    return field.value_at(x, y) - obstacle_on_edge(obstacle, x, y, -std::cos(t), -std::sin(t), g.h);
   };
   auto free_here = [&](double t) {  // on the grid's part and off every spline arc
     double x, y;

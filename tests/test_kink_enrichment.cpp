@@ -89,7 +89,7 @@ TEST(KinkEnrichment, BlocksMatchABruteForceQuadrature) {
   const double rough[3] = {coarse.b, coarse.e, coarse.load}, good[3] = {fine.b, fine.e, fine.load};
   for (int i = 0; i < 3; ++i) {
     const double own = std::abs(good[i] - rough[i]);
-    EXPECT_LE(std::abs(assembled[i] - good[i]), std::max(own, 1e-13 * std::abs(good[i]))) << i;
+    EXPECT_LE(std::abs(assembled[i] - good[i]), std::max(own, 1e-13 * std::abs(good[i]))) << i << " assembled " << assembled[i] << " good " << good[i] << " rough " << rough[i];
     EXPECT_GT(std::abs(good[i]), 100 * own) << i;  // the brute-force rule resolves the entry
   }
   EXPECT_EQ(blocks.border.coeff(N + k, dof), blocks.border.coeff(dof, N + k));
@@ -218,6 +218,31 @@ TEST(KinkEnrichment, UnfoldedFieldIsThePartsField) {
     share = std::max(share, std::abs(PlateField(x.whole(), x.result.w).enrichment_at(px, py).wxx));
   }
   EXPECT_GT(share, 1e-3);
+}
+
+// value_at is at(x, y).w to the last bit, on the part and on the whole plate, near the rim (where
+// the enrichment's share is read), deep inside it, beyond the cut-off, on the mirror lines and at
+// the corner; and it refuses a point off the plate as at() does.
+TEST(KinkEnrichment, ValueAtIsTheValueThatAtReads) {
+  SamplingSpec spec{SamplingKind::Edge};
+  spec.enrich.kind = EnrichSpec::Kind::Ring;
+  const SceneSolution x = solve_exact_scene(paper_scene(), 64, spec, ExactOptions{});
+  ASSERT_TRUE(x.solved.kink && x.whole().kink);
+  int near = 0;
+  for (const auto& [p, w] : {std::pair<const Problem*, const VectorXd*>{&x.solved, &x.part_w}, {&x.whole(), &x.result.w}}) {
+    const PlateField field(*p, *w);
+    for (int k = 0; k < 400; ++k) {
+      // radii from deep inside the rim to beyond the cut-off, at angles all round
+      const double r = 0.25 + (k % 20 - 8) * 0.25 / 64, theta = 0.0157 * k * 7.3;
+      const double px = 0.5 + r * std::cos(theta), py = 0.5 + r * std::sin(theta);
+      EXPECT_EQ(field.value_at(px, py), field.at(px, py).w) << px << ", " << py;
+      near += kink_near(*p->kink, px, py) && field.enrichment_at(px, py).w != 0;
+    }
+    for (const auto& [px, py] : {std::pair{0.5, 0.5}, {0.5, 0.3}, {0.0, 0.0}, {1.0, 1.0}, {0.5, 0.7}})
+      EXPECT_EQ(field.value_at(px, py), field.at(px, py).w) << px << ", " << py;
+    EXPECT_THROW(field.value_at(1.5, 0.5), std::invalid_argument);
+  }
+  EXPECT_GT(near, 100);  // the enrichment's share was read, not only the grid's
 }
 
 // Every row of S reads the field of the whole space: a point row on the rim the enriched field at
