@@ -182,10 +182,15 @@ KinkValue kink_profile(const KinkEnrichment& e, int k, double x, double y) {
 
 SpMat kink_interpolant(const Grid& g, const KinkEnrichment& e) {
   std::vector<Eigen::Triplet<double>> t;
+  const double reach = e.a + e.outer + 1.5 * g.h;
   for (int j = 0; j <= g.ny; ++j)
     for (int i = 0; i <= g.nx; ++i) {
       if (!g.is_interior(i, j)) continue;
-      const double dx = g.x(i) - e.cx, dy = g.y(j) - e.cy, r = std::hypot(dx, dy);
+      const double dx = g.x(i) - e.cx, dy = g.y(j) - e.cy;
+      // Most nodes lie far beyond the band: a squared distance with a margin passes them over
+      // before the exact test below (std::hypot on every node of the whole plate took 0.2 ms).
+      if (dx * dx + dy * dy > 1.01 * reach * reach && reach < 1e150) continue;
+      const double r = std::hypot(dx, dy);
       // Only the nodes of squares where chi is not 0 are ever read: within outer + sqrt(2) cells.
       if (r - e.a >= e.outer + 1.5 * g.h) continue;
       if (!(r > e.a)) continue;
