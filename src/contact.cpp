@@ -167,7 +167,12 @@ EdgeDip deepest_dip_below_edge(const Problem& p, const VectorXd& w) {
   const EdgePoints e = edge_points(p.scene.edge, p.grid.h / 32);
   EdgeDip dip{0, NAN};
   const PlateField field(p, w);
+  // On a part (mirror.hpp) the plate beyond a mirror line is the image of the part's own, so only
+  // the edge's points on the part are read: a quarter of them on the paper's scene.
+  const Grid& g = p.grid;
+  const double beyond_x = g.lx() + 1e-12 * g.whole_lx(), beyond_y = g.ly() + 1e-12 * g.whole_ly();
   for (int k = 0; k < e.size(); ++k) {
+    if ((g.mirror_x && e.x[k] > beyond_x) || (g.mirror_y && e.y[k] > beyond_y)) continue;
     const double phi = obstacle_on_edge(obstacle, e.x[k], e.y[k], e.nx[k], e.ny[k], p.grid.h);
     const double below = std::isfinite(phi) ? phi - field.value_at(e.x[k], e.y[k]) : 0.0;
     if (below > dip.depth) dip = {below, e.theta.empty() ? NAN : e.theta[k]};

@@ -332,7 +332,9 @@ KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const Sp
   std::vector<Eigen::Triplet<double>> t;
   KinkBlocks out;
   out.load = VectorXd::Zero(e.size());
-  std::vector<double> cuts;
+  std::vector<double> cuts, knot_angles;
+  for (int j = 0; j < e.knots; ++j) knot_angles.push_back(std::remainder(j * spacing, 2 * M_PI));
+  std::sort(knot_angles.begin(), knot_angles.end());
   CellBlocks cb;
   Eigen::MatrixXd Bl, El;
   VectorXd fl;
@@ -353,7 +355,15 @@ KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const Sp
       for (double x : {x0, x1})
         for (double y : {y0, y1}) cuts.push_back(std::atan2(y - e.cy, x - e.cx));
       for (double rho : radii) circle_crossings(e.cx, e.cy, rho, x0, x1, y0, y1, cuts);
-      for (int j = 0; j < e.knots; ++j) cuts.push_back(std::remainder(j * spacing, 2 * M_PI));
+      // Only the knots within the cell's angles cut it (all where it straddles theta = pi): the
+      // pieces outside those angles miss the cell, and were only ever passed over.
+      const auto corners = std::minmax_element(cuts.begin() + 2, cuts.begin() + 6);
+      const double lo = *corners.first, hi = *corners.second;
+      if (hi - lo > M_PI)
+        cuts.insert(cuts.end(), knot_angles.begin(), knot_angles.end());
+      else
+        cuts.insert(cuts.end(), std::upper_bound(knot_angles.begin(), knot_angles.end(), lo),
+                    std::lower_bound(knot_angles.begin(), knot_angles.end(), hi));
       std::sort(cuts.begin(), cuts.end());
       for (size_t c = 0; c + 1 < cuts.size(); ++c) {
         const double t0 = cuts[c], t1 = cuts[c + 1];

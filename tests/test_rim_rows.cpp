@@ -104,6 +104,22 @@ TEST(RimRows, PointWeightsCoverTheCircleOffTheArcs) {
 // cells inside it as the arc's geometry says (half its length at its middle, half a cell half a cell
 // in), one off every arc lies between points, and the same angles a turn away read the same. Rows
 // at points have no arcs, and the paper's scene keeps its periodic splines, which have no end.
+// On a part of the plate (mirror lines) the dip is read on the part's own stretch of the edge alone:
+// it is the whole plate's dip, to round-off, and placed on the part.
+TEST(RimRows, ThePartsDipIsTheWholePlatesDip) {
+  const Scene lift_off = Scene::rectangle(2, 1).over(Cylinder{1, 0.5, 0.25, 0.0625});
+  for (int n : {32, 64}) {
+    const SceneSolution x = solve_exact_scene(lift_off, n, SamplingSpec{SamplingKind::Edge, EdgeRows{}}, ExactOptions{});
+    ASSERT_TRUE(x.result.converged) << x.result.message;
+    ASSERT_TRUE(x.solved.grid.mirror_x && x.solved.grid.mirror_y);
+    const EdgeDip part = deepest_dip_below_edge(x.solved, x.part_w), whole = deepest_dip_below_edge(x.whole(), x.result.w);
+    ASSERT_GT(whole.depth, 0);
+    EXPECT_NEAR(part.depth, whole.depth, 1e-15 * 0.0625) << n;
+    EXPECT_LE(1 + 0.25 * std::cos(part.theta), 1 + 1e-12) << n;  // on the lower-left quarter
+    EXPECT_LE(0.5 + 0.25 * std::sin(part.theta), 0.5 + 1e-12) << n;
+  }
+}
+
 TEST(RimRows, TheDeepestDipIsPlacedAmongTheRowsThatHoldThePlate) {
   const auto solve = [](const Scene& scene, int n, EdgeRows rows) {
     SceneSolution x = solve_exact_scene(scene, n, SamplingSpec{SamplingKind::Edge, rows}, ExactOptions{});
