@@ -18,9 +18,10 @@ LocalBasis bfs_basis(double t, double s, double h);
 // Its values alone (bfs_basis(t, s, h).v, the same numbers): a read of w that needs no slope.
 Vector16 bfs_values(double t, double s, double h);
 // The three columns of 16 that the kink's blocks (D31) read along a ray of direction (c, sn): the
-// values, the slopes along the ray and the Laplacians, written straight into out[0 .. 47] (copied
-// from a LocalBasis, a wide load met the narrow stores that made it, and stalled: 20% of the blocks).
-void bfs_basis_along(double t, double s, double h, double c, double sn, double* out);
+// values, the slopes along the ray (none where `slope` is null) and the Laplacians, written straight
+// where they go (copied from a LocalBasis, a wide load met the narrow stores that made it, and
+// stalled: 20% of the blocks).
+void bfs_basis_along(double t, double s, double h, double c, double sn, double* value, double* slope, double* lap);
 
 // Element matrices, integrated exactly by 4 x 4 Gauss points.
 Matrix16 bfs_stiffness(double h);  // (Lap u, Lap v) on the element

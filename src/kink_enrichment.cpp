@@ -228,6 +228,7 @@ struct CellBlocks {
   std::vector<Ray> rays;
   std::vector<double> r, wt;  // each point: radius and weight
   std::vector<int> ray;       // and the ray it lies on
+  std::vector<int> slope_row;  // and its slope's basis row, or -1 where chi is flat (cell_blocks)
   // Kept from cell to cell and only ever grown, so that no cell allocates: resized to each cell's
   // points, they made a third of the blocks' time stores to fresh pages.
   Eigen::MatrixXd basis, D, psi, lap_psi, weighted;
@@ -257,52 +258,65 @@ struct CellBlocks {
 }  // namespace
 
 // @region kink-blocks
-// F = g(r) S(theta) of (D31) added to D's value, radial slope and Laplacian, the three that Lap psi
-// needs; ir = 1 / r.
-static void add_profile(const Radial& g, const Spline3& S, double ir, double* d) {
-  d[0] += g.g * S.v;
-  d[1] += g.g1 * S.v;
-  d[2] += g.g2 * S.v + ir * g.g1 * S.v + ir * ir * g.g * S.d2;
+// F = g(r) S(theta) of (D31) added to D's value, radial slope (where chi is not flat) and
+// Laplacian, the three that Lap psi needs; ir = 1 / r.
+static void add_profile(const Radial& g, const Spline3& S, double ir, double& v, double* slope, double& lap) {
+  v += g.g * S.v;
+  if (slope) *slope += g.g1 * S.v;
+  lap += g.g2 * S.v + ir * g.g1 * S.v + ir * ir * g.g * S.d2;
 }
 
 // Eq. (D31)'s blocks on one cell from its gathered points: Bl = (Lap phi_i, Lap psi_k) (16 x L),
 // El = (Lap psi_k, Lap psi_l) (L x L) and fl = (f, psi_k), with psi = chi D and D = F - I_h F.
 // Lap psi = chi Lap D + 2 chi' D_r + D Lap chi reads D's value, slope along the ray and Laplacian
-// alone, so each point carries those three rows; five Cartesian ones made the blocks a fifth slower
-// (n = 64: 7.3 ms against 6.0 ms), most of it in the product with the interpolant.
+// alone; where chi is flat (1, out to kKinkFlatCells cells) it is Lap D, and psi is D, so the slope
+// is carried only across the cut-off. The basis rows hold every point's Laplacians first (Lap phi_i,
+// read in place by the border), then its values, then the cut-off's slopes. Five Cartesian rows a
+// point made the blocks a fifth slower (n = 64: 7.3 ms against 6.0 ms), three at every point a
+// tenth, most of it in the product with the interpolant.
 static void cell_blocks(const Grid& g, const KinkEnrichment& e, const Field& f, double x0, double y0, CellBlocks& cb,
                         Eigen::MatrixXd& Bl, Eigen::MatrixXd& El, VectorXd& fl) {
   const int np = static_cast<int>(cb.r.size()), L = static_cast<int>(cb.met.size());
-  auto basis = CellBlocks::first(cb.basis, 16, 3 * np);
+  cb.slope_row.assign(np, -1);
+  int rows = 2 * np;
+  for (int p = 0; p < np; ++p)
+    if (cb.r[p] - e.a > e.inner) cb.slope_row[p] = rows++;
+  auto basis = CellBlocks::first(cb.basis, 16, rows);
   if (cb.load.size() < np) cb.load.resize(np);
   for (int p = 0; p < np; ++p) {
     const CellBlocks::Ray& ray = cb.rays[cb.ray[p]];
     const double x = e.cx + cb.r[p] * ray.cs, y = e.cy + cb.r[p] * ray.sn;
-    bfs_basis_along((x - x0) / g.h, (y - y0) / g.h, g.h, ray.cs, ray.sn, &basis(0, 3 * p));
+    const int sr = cb.slope_row[p];
+    bfs_basis_along((x - x0) / g.h, (y - y0) / g.h, g.h, ray.cs, ray.sn, &basis(0, np + p), sr < 0 ? nullptr : &basis(0, sr), &basis(0, p));
     cb.load[p] = cb.wt[p] * f(x, y);
   }
   // D = F - I_h F at every point: first minus the interpolant's share, for all functions at once.
-  CellBlocks::first(cb.D, 3 * np, L).noalias() = -basis.transpose() * cb.Pl.leftCols(L);  // 3 rows per point, one column per function
+  auto D = CellBlocks::first(cb.D, rows, L);  // the basis rows' order, one column per function
+  D.noalias() = -basis.transpose() * cb.Pl.leftCols(L);
   auto psi = CellBlocks::first(cb.psi, L, np), lap_psi = CellBlocks::first(cb.lap_psi, L, np);
   for (int p = 0; p < np; ++p) {
     const CellBlocks::Ray& ray = cb.rays[cb.ray[p]];
     const double r = cb.r[p];
+    const int sr = cb.slope_row[p];
     if (r > e.a) {
       const Radial F = kink_radial(r - e.a, e.a);
-      for (int k = 0; k < ray.sp.count; ++k) add_profile(F, ray.sp.b[k], 1 / r, &cb.D(3 * p, ray.idx[k]));
+      for (int k = 0; k < ray.sp.count; ++k) {
+        const int l = ray.idx[k];
+        add_profile(F, ray.sp.b[k], 1 / r, D(np + p, l), sr < 0 ? nullptr : &D(sr, l), D(p, l));
+      }
+    }
+    if (sr < 0) {  // chi = 1, chi' = 0 here
+      for (int l = 0; l < L; ++l) psi(l, p) = D(np + p, l), lap_psi(l, p) = D(p, l);
+      continue;
     }
     const Radial chi = cutoff(e, r - e.a);
     const double lapchi = chi.g2 + chi.g1 / r;
-    for (int l = 0; l < L; ++l) {
-      const double* d = &cb.D(3 * p, l);
-      psi(l, p) = chi.g * d[0], lap_psi(l, p) = chi.g * d[2] + 2 * chi.g1 * d[1] + d[0] * lapchi;
-    }
+    for (int l = 0; l < L; ++l)
+      psi(l, p) = chi.g * D(np + p, l), lap_psi(l, p) = chi.g * D(p, l) + 2 * chi.g1 * D(sr, l) + D(np + p, l) * lapchi;
   }
   auto weighted = CellBlocks::first(cb.weighted, L, np);
   weighted.noalias() = lap_psi * Eigen::Map<const VectorXd>(cb.wt.data(), np).asDiagonal();
-  // Lap phi_i at each point is every third column of the basis rows, read in place.
-  const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> lap_phi(cb.basis.data() + 2 * 16, 16, np, Eigen::OuterStride<>(3 * 16));
-  Bl.noalias() = lap_phi * weighted.transpose();
+  Bl.noalias() = basis.leftCols(np) * weighted.transpose();  // Lap phi_i: the first np rows
   El.noalias() = weighted * lap_psi.transpose();
   fl.noalias() = psi * cb.load.head(np);
 }

@@ -116,8 +116,9 @@ TEST(BfsElement, PartialReadsOfTheBasisAreTheWholeOnesNumbers) {
       const double t = u(gen), s = u(gen), th = a(gen), c = std::cos(th), sn = std::sin(th);
       const LocalBasis b = bfs_basis(t, s, h);
       const Vector16 v = bfs_values(t, s, h);
-      double along[48];
-      bfs_basis_along(t, s, h, c, sn, along);
+      double along[48], again[48];
+      bfs_basis_along(t, s, h, c, sn, along, along + 16, along + 32);
+      bfs_basis_along(t, s, h, c, sn, again, nullptr, again + 32);  // no slopes: the same others
       const double slope_size = b.dx.cwiseAbs().maxCoeff() + b.dy.cwiseAbs().maxCoeff();
       const double lap_size = b.dxx.cwiseAbs().maxCoeff() + b.dyy.cwiseAbs().maxCoeff();
       for (int i = 0; i < 16; ++i) {
@@ -125,6 +126,8 @@ TEST(BfsElement, PartialReadsOfTheBasisAreTheWholeOnesNumbers) {
         EXPECT_NEAR(along[i], b.v[i], 4e-16);
         EXPECT_NEAR(along[16 + i], c * b.dx[i] + sn * b.dy[i], 1e-15 * slope_size);
         EXPECT_NEAR(along[32 + i], b.dxx[i] + b.dyy[i], 1e-15 * lap_size);
+        EXPECT_EQ(again[i], along[i]);
+        EXPECT_EQ(again[32 + i], along[32 + i]);
       }
     }
   }
