@@ -62,7 +62,12 @@ SplinesAt splines_at(const KinkEnrichment& e, double theta) {
   const int j0 = static_cast<int>(std::floor(theta / spacing));
   for (int j = j0 - 1; j <= j0 + 2; ++j) {
     const int jj = ((j % e.knots) + e.knots) % e.knots;
-    Spline3 b = cubic_bspline(std::remainder(theta - jj * spacing, 2 * M_PI) / spacing);
+    // theta - jj spacing within (-pi, pi], as std::remainder by 2 pi gives it (to the bit: the
+    // difference with 2 pi is exact), without its cost: four calls a ray were a tenth of the blocks.
+    double d = theta - jj * spacing;
+    if (d > M_PI) d -= 2 * M_PI;
+    else if (d < -M_PI) d += 2 * M_PI;
+    Spline3 b = cubic_bspline(d / spacing);
     if (b.v == 0 && b.d1 == 0 && b.d2 == 0) continue;
     b.d1 /= spacing, b.d2 /= spacing * spacing;
     s.j[s.count] = jj, s.b[s.count] = b, ++s.count;
