@@ -171,11 +171,18 @@ EdgeDip deepest_dip_below_edge(const Problem& p, const VectorXd& w) {
   // the edge's points on the part are read: a quarter of them on the paper's scene.
   const Grid& g = p.grid;
   const double beyond_x = g.lx() + 1e-12 * g.whole_lx(), beyond_y = g.ly() + 1e-12 * g.whole_ly();
+  // A scene's symmetry gives its images dips that differ by round-off of w alone: two places more
+  // than a cell apart within 1e-13 of phi tie, and the first along the edge keeps the place, so
+  // that every build names the same one (extrema.cpp does the same for the field's extremes).
+  double at_x = 0, at_y = 0;
   for (int k = 0; k < e.size(); ++k) {
     if ((g.mirror_x && e.x[k] > beyond_x) || (g.mirror_y && e.y[k] > beyond_y)) continue;
     const double phi = obstacle_on_edge(obstacle, e.x[k], e.y[k], e.nx[k], e.ny[k], p.grid.h);
     const double below = std::isfinite(phi) ? phi - field.value_at(e.x[k], e.y[k]) : 0.0;
-    if (below > dip.depth) dip = {below, e.theta.empty() ? NAN : e.theta[k]};
+    if (!(below > dip.depth)) continue;
+    const bool first = dip.depth == 0, near = std::hypot(e.x[k] - at_x, e.y[k] - at_y) <= g.h;
+    if (first || near || below - dip.depth > 1e-13 * std::abs(phi))
+      dip = {below, e.theta.empty() ? NAN : e.theta[k]}, at_x = e.x[k], at_y = e.y[k];
   }
   return dip;
 }

@@ -117,6 +117,9 @@ TEST(RimRows, ThePartsDipIsTheWholePlatesDip) {
     EXPECT_NEAR(part.depth, whole.depth, 1e-15 * 0.0625) << n;
     EXPECT_LE(1 + 0.25 * std::cos(part.theta), 1 + 1e-12) << n;  // on the lower-left quarter
     EXPECT_LE(0.5 + 0.25 * std::sin(part.theta), 0.5 + 1e-12) << n;
+    // The whole plate's four images tie; the first along the edge from theta = 0 is named: the
+    // part's, turned through pi.
+    EXPECT_NEAR(whole.theta, part.theta - M_PI, 1e-12) << n;
   }
 }
 
