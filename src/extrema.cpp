@@ -48,9 +48,16 @@ Extremum extremum_of(const Grid& g, const At& at, double sign, int starts) {
   std::vector<Extremum> nodes;
   for (int j = 0; j <= g.ny; ++j)
     for (int i = 0; i <= g.nx; ++i) nodes.push_back({value(i * g.h, j * g.h), i * g.h, j * g.h});
-  const int k = std::min<int>(starts, static_cast<int>(nodes.size()));
+  // The first node in the nodes' order among those that tie with the best always starts a search,
+  // whichever of the tied images round-off put among the `starts` best.
+  double top = nodes[0].value;
+  for (const Extremum& n : nodes) top = std::max(top, n.value);
+  const Extremum first = *std::find_if(nodes.begin(), nodes.end(), [&](const Extremum& n) { return top - n.value <= 1e-13 * std::abs(top); });
+  int k = std::min<int>(starts, static_cast<int>(nodes.size()));
   std::partial_sort(nodes.begin(), nodes.begin() + k, nodes.end(),
                     [](const Extremum& a, const Extremum& b) { return a.value > b.value; });
+  if (std::none_of(nodes.begin(), nodes.begin() + k, [&](const Extremum& n) { return n.x == first.x && n.y == first.y; }))
+    nodes.insert(nodes.begin(), first), ++k;
   Extremum best;
   for (int s = 0; s < k; ++s) {
     double x = nodes[s].x, y = nodes[s].y;
