@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -29,13 +30,15 @@ Extremum pattern_maximum(const Grid& g, const std::function<double(double, doubl
 namespace {
 // Whether a beats b as a maximum. Two places more than a cell h apart whose values lie within 1e-13
 // of each other tie (a scene's symmetry gives its images values that differ by round-off alone),
-// and the tie goes to the place first in the order of the grid's nodes (y, then x): the same place
-// on every build. Nearer than that they are one place found twice, and the larger value is the
-// closer find.
+// and the tie goes to the place first in the order of the grid's nodes: by its nearest node's row,
+// then column (the refined places' own coordinates differ by round-off where images share a row).
+// Nearer than a cell they are one place found twice, and the larger value is the closer find.
 bool beats(const Extremum& a, const Extremum& b, double h) {
   const double tie = 1e-13 * std::max(std::abs(a.value), std::abs(b.value));
   if (std::abs(a.value - b.value) > tie || std::hypot(a.x - b.x, a.y - b.y) <= h) return a.value > b.value;
-  return std::make_pair(a.y, a.x) < std::make_pair(b.y, b.x);
+  const auto node = [h](const Extremum& e) { return std::make_pair(std::lround(e.y / h), std::lround(e.x / h)); };
+  if (node(a) != node(b)) return node(a) < node(b);
+  return a.value > b.value;
 }
 
 template <class At>
@@ -43,21 +46,23 @@ Extremum extremum_of(const Grid& g, const At& at, double sign, int starts) {
   const double lx = g.whole_lx(), ly = g.whole_ly();
   auto value = [&](double x, double y) { return sign * at(x, y).w; };
   // The best nodes of the grid. On a part (mirror lines) the rest of the plate holds its images,
-  // the same values to round-off, so the part's own nodes suffice: the place found is then always
-  // on the part, never whichever image round-off favoured (which moved from build to build).
+  // the same values to round-off, so the part's own nodes suffice: the place found is then on the
+  // part (to round-off, at a mirror line), never whichever image round-off favoured.
   std::vector<Extremum> nodes;
   for (int j = 0; j <= g.ny; ++j)
     for (int i = 0; i <= g.nx; ++i) nodes.push_back({value(i * g.h, j * g.h), i * g.h, j * g.h});
   // The first node in the nodes' order among those that tie with the best always starts a search,
   // whichever of the tied images round-off put among the `starts` best.
-  double top = nodes[0].value;
-  for (const Extremum& n : nodes) top = std::max(top, n.value);
-  const Extremum first = *std::find_if(nodes.begin(), nodes.end(), [&](const Extremum& n) { return top - n.value <= 1e-13 * std::abs(top); });
+  double top = -INFINITY;
+  for (const Extremum& n : nodes)
+    if (std::isfinite(n.value)) top = std::max(top, n.value);
+  const auto first = std::find_if(nodes.begin(), nodes.end(), [&](const Extremum& n) { return top - n.value <= 1e-13 * std::abs(top); });
+  const std::optional<Extremum> tied = first == nodes.end() ? std::nullopt : std::optional<Extremum>(*first);  // none: no finite value
   int k = std::min<int>(starts, static_cast<int>(nodes.size()));
   std::partial_sort(nodes.begin(), nodes.begin() + k, nodes.end(),
                     [](const Extremum& a, const Extremum& b) { return a.value > b.value; });
-  if (std::none_of(nodes.begin(), nodes.begin() + k, [&](const Extremum& n) { return n.x == first.x && n.y == first.y; }))
-    nodes.insert(nodes.begin(), first), ++k;
+  if (tied && std::none_of(nodes.begin(), nodes.begin() + k, [&](const Extremum& n) { return n.x == tied->x && n.y == tied->y; }))
+    nodes.insert(nodes.begin(), *tied), ++k;
   Extremum best;
   for (int s = 0; s < k; ++s) {
     double x = nodes[s].x, y = nodes[s].y;

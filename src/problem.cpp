@@ -309,6 +309,7 @@ std::string overflow_risk(const Problem& p) {
 // order, not the merge of K += border (half a millisecond of plate -n 64, a tenth of its blocks).
 static SpMat with_border(const SpMat& K, const SpMat& border) {
   const Eigen::Index N = K.rows(), n = border.rows();
+  if (n < N || border.cols() != n) throw std::logic_error("with_border: the border is smaller than K, or not square");
   SpMat sum(n, n);
   sum.reserve(K.nonZeros() + border.nonZeros());
   for (Eigen::Index j = 0; j < n; ++j) {

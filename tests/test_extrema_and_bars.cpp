@@ -49,7 +49,6 @@ TEST(Extrema, NewtonFindsThePeakOfTheInterpolantBetweenNodes) {
   EXPECT_NEAR(m.x, px, 1e-12);
 }
 
-// The pattern search, on a function whose peak lies off every lattice it starts from.
 // Where a scene's symmetry makes several places tie, the one reported does not depend on round-off:
 // solved on its quarter (mirror lines) or on the whole plate, the paper's scene puts min w (four
 // images, one near each corner) and max |m12| at the same place, the images' first in the order of
@@ -71,6 +70,7 @@ TEST(Extrema, ThePlaceOfATiedExtremumIsTheSameOnThePartAndTheWholePlate) {
   }
 }
 
+// The pattern search, on a function whose peak lies off every lattice it starts from.
 TEST(Extrema, PatternSearchClosesInOnAKink) {
   const Grid g = make_grid(10);
   const auto cone = [](double x, double y) { return -std::abs(x - 0.3141) - 2 * std::abs(y - 0.7071); };
