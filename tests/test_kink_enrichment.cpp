@@ -67,6 +67,13 @@ Brute brute(const Grid& g, const KinkEnrichment& e, const SpMat& P, int k, int d
     }
   return out;
 }
+
+// The paper's scene at n = 64 with (D31), solved on its quarter.
+SceneSolution paper_scene_with_kink() {
+  SamplingSpec spec{SamplingKind::Edge};
+  spec.enrich.kind = EnrichSpec::Kind::Ring;
+  return solve_exact_scene(paper_scene(), 64, spec, ExactOptions{});
+}
 }  // namespace
 
 // The assembled blocks (polar rule split at the rim, the cut-off, the knots and the cells' corners)
@@ -203,9 +210,7 @@ TEST(KinkEnrichment, ConvergesAgainstTheSeriesTheForceAtOrderFour) {
 // The field read on the whole plate (a quarter solved, unfolded) is the field of the part: at points
 // near the rim, beyond the mirror lines too, where the enrichment's share is not small.
 TEST(KinkEnrichment, UnfoldedFieldIsThePartsField) {
-  SamplingSpec spec{SamplingKind::Edge};
-  spec.enrich.kind = EnrichSpec::Kind::Ring;
-  const SceneSolution x = solve_exact_scene(paper_scene(), 64, spec, ExactOptions{});
+  const SceneSolution x = paper_scene_with_kink();
   ASSERT_TRUE(x.solved.kink && x.whole().kink);
   double share = 0;
   for (double theta : {0.3, 1.2, 2.0, 3.5, 5.0}) {
@@ -224,9 +229,7 @@ TEST(KinkEnrichment, UnfoldedFieldIsThePartsField) {
 // the enrichment's share is read), deep inside it, beyond the cut-off, on the mirror lines and at
 // the corner; and it refuses a point off the plate as at() does.
 TEST(KinkEnrichment, ValueAtIsTheValueThatAtReads) {
-  SamplingSpec spec{SamplingKind::Edge};
-  spec.enrich.kind = EnrichSpec::Kind::Ring;
-  const SceneSolution x = solve_exact_scene(paper_scene(), 64, spec, ExactOptions{});
+  const SceneSolution x = paper_scene_with_kink();
   ASSERT_TRUE(x.solved.kink && x.whole().kink);
   int near = 0;
   for (const auto& [p, w] : {std::pair<const Problem*, const VectorXd*>{&x.solved, &x.part_w}, {&x.whole(), &x.result.w}}) {
