@@ -9,19 +9,22 @@
 namespace plate {
 
 namespace {
-PointValues evaluate_in(const Grid& g, const VectorXd& w, int ex, int ey, double t, double s) {
-  const LocalBasis b = bfs_basis(t, s, g.h);
+// The coefficients of w on element (ex, ey): 0 for the clamped unknowns.
+Vector16 coefficients_in(const Grid& g, const VectorXd& w, int ex, int ey) {
   const auto dofs = g.element_dofs(ex, ey);
   Vector16 c;
   for (int k = 0; k < 16; ++k) c[k] = dofs[k] >= 0 ? w[dofs[k]] : 0.0;
+  return c;
+}
+
+PointValues evaluate_in(const Grid& g, const VectorXd& w, int ex, int ey, double t, double s) {
+  const LocalBasis b = bfs_basis(t, s, g.h);
+  const Vector16 c = coefficients_in(g, w, ex, ey);
   return {c.dot(b.v), c.dot(b.dx), c.dot(b.dy), c.dot(b.dxx), c.dot(b.dxy), c.dot(b.dyy)};
 }
 
 double value_in(const Grid& g, const VectorXd& w, int ex, int ey, double t, double s) {
-  const auto dofs = g.element_dofs(ex, ey);
-  Vector16 c;
-  for (int k = 0; k < 16; ++k) c[k] = dofs[k] >= 0 ? w[dofs[k]] : 0.0;
-  return c.dot(bfs_values(t, s, g.h));
+  return coefficients_in(g, w, ex, ey).dot(bfs_values(t, s, g.h));
 }
 
 void locate_or_throw(const Grid& g, double x, double y, int& ex, int& ey, double& t, double& s, int& flips) {

@@ -63,7 +63,7 @@ SplinesAt splines_at(const KinkEnrichment& e, double theta) {
   for (int j = j0 - 1; j <= j0 + 2; ++j) {
     const int jj = ((j % e.knots) + e.knots) % e.knots;
     // theta - jj spacing within (-pi, pi], as std::remainder by 2 pi gives it (to the bit: the
-    // difference with 2 pi is exact), without its cost: four calls a ray were a tenth of the blocks.
+    // difference with 2 pi is exact), without its cost: four calls a ray were 4% of the blocks.
     double d = theta - jj * spacing;
     if (d > M_PI) d -= 2 * M_PI;
     else if (d < -M_PI) d += 2 * M_PI;
@@ -234,8 +234,8 @@ struct CellBlocks {
   std::vector<double> r, wt;  // each point: radius and weight
   std::vector<int> ray;       // and the ray it lies on
   std::vector<int> slope_row;  // and its slope's basis row, or -1 where chi is flat (cell_blocks)
-  // Kept from cell to cell and only ever grown, so that no cell allocates: resized to each cell's
-  // points, they made a third of the blocks' time stores to fresh pages.
+  // Kept from cell to cell and only ever grown, so that no cell allocates (resized to each cell's
+  // points, they cost the blocks 1.5% at n = 64).
   Eigen::MatrixXd basis, D, psi, lap_psi, weighted;
   VectorXd load;
   static Eigen::Block<Eigen::MatrixXd> first(Eigen::MatrixXd& m, Eigen::Index rows, Eigen::Index cols) {
@@ -277,8 +277,8 @@ static void add_profile(const Radial& g, const Spline3& S, double ir, double& v,
 // alone; where chi is flat (1, out to kKinkFlatCells cells) it is Lap D, and psi is D, so the slope
 // is carried only across the cut-off. The basis rows hold every point's Laplacians first (Lap phi_i,
 // read in place by the border), then its values, then the cut-off's slopes. Five Cartesian rows a
-// point made the blocks a fifth slower (n = 64: 7.3 ms against 6.0 ms), three at every point a
-// tenth, most of it in the product with the interpolant.
+// point made the blocks a fifth slower (n = 64: 7.3 ms against 6.0 ms), most of it in the product
+// with the interpolant; three at every point, 5% slower than this.
 static void cell_blocks(const Grid& g, const KinkEnrichment& e, const Field& f, double x0, double y0, CellBlocks& cb,
                         Eigen::MatrixXd& Bl, Eigen::MatrixXd& El, VectorXd& fl) {
   const int np = static_cast<int>(cb.r.size()), L = static_cast<int>(cb.met.size());
