@@ -162,7 +162,8 @@ ExactResult solve_exact_rows(Problem& p, const ExactOptions& o, const NodeSet& c
   }
   res.w = std::move(w);
   res.certificate = certify(p, res.w, res.lambda);
-  if (res.message.empty() && res.certificate.worst() > o.tol) res.message = certificate_failure(res.certificate, o.tol);
+  if (res.message.empty() && !(res.certificate.worst() <= o.tol))  // a NaN entry fails too
+    res.message = certificate_failure(res.certificate, o.tol);
   res.converged = res.message.empty();
   level.active = members(res.active);
   level.factorizations = own.factorizations();

@@ -11,25 +11,50 @@
 namespace plate {
 
 namespace {
-// The sizes the relative tolerances refer to; never zero, so a plate without contact divides safely.
-double value_scale(const VectorXd& w) { return std::max(max_nodal_abs(w), 1e-300); }
-double force_scale(const VectorXd& lambda) { return std::max(lambda.cwiseAbs().maxCoeff(), 1e-300); }
+// The highest the obstacle asks the plate to reach. Any answer that keeps above it is at least that
+// large somewhere, so feasible answers keep the scale max |w|; an answer that lies below a positive
+// obstacle everywhere (w = 0 under R = 1e-320, where the solve underflowed) is measured against the
+// obstacle instead, and fails.
+double obstacle_top(const VectorXd& phi) {
+  double top = 0;
+  for (double v : phi)
+    if (std::isfinite(v)) top = std::max(top, v);
+  return top;
+}
+// The sizes the relative tolerances refer to, or 1 where they are 0 (every entry's numerator is then
+// 0 as well, unless the answer is wrong). A fixed floor such as 1e-300 would pass any answer to a
+// problem smaller than it.
+double or_one(double scale) { return scale > 0 ? scale : 1.0; }
+double value_scale(const VectorXd& w, const VectorXd& phi) { return or_one(std::max(max_nodal_abs(w), obstacle_top(phi))); }
+double force_scale(const VectorXd& lambda) { return or_one(lambda.size() ? lambda.cwiseAbs().maxCoeff() : 0.0); }
+// entry = max(entry, v), where a NaN stays: a NaN in w or lambda must fail the certificate.
+void raise(double& entry, double v) {
+  if (!std::isnan(entry) && (std::isnan(v) || v > entry)) entry = v;
+}
 }  // namespace
 
+// NaN wins: std::max passes over it, and a NaN entry would let a broken answer through.
 double Certificate::worst() const {
-  return std::max(std::max(violation, negative_multiplier), std::max(complementarity, stationarity));
+  double m = 0;
+  for (double v : {violation, negative_multiplier, complementarity, stationarity}) {
+    if (std::isnan(v)) return v;
+    m = std::max(m, v);
+  }
+  return m;
 }
 
 // @region certificate
 Certificate certify(const Problem& p, const VectorXd& w, const VectorXd& lambda) {
   Certificate c;
-  const double wmax = value_scale(w.head(p.grid.unknowns())), lmax = force_scale(lambda);
+  const double wmax = value_scale(w.head(p.grid.unknowns()), p.phi), lmax = force_scale(lambda);
   const VectorXd Sw = p.sampling.S * w;
   for (int q = 0; q < p.phi.size(); ++q) {
     const double gap = Sw[q] - p.phi[q];  // +inf where there is no obstacle
-    c.violation = std::max(c.violation, -gap / wmax);
-    c.negative_multiplier = std::max(c.negative_multiplier, -lambda[q] / lmax);
-    if (lambda[q] != 0) c.complementarity = std::max(c.complementarity, std::abs(lambda[q] * gap) / (lmax * wmax));
+    raise(c.violation, -gap / wmax);
+    raise(c.negative_multiplier, -lambda[q] / lmax);
+    // Each factor scaled first: the product of the raw ones underflows to 0 (a check that cannot
+    // fail) for heights below about 1e-160, and overflows to a NaN that std::max passes over above 1e150.
+    if (lambda[q] != 0) raise(c.complementarity, std::abs(lambda[q] / lmax) * std::abs(gap / wmax));
   }
   // Componentwise backward error (Oettli-Prager): the smallest relative change of K, F and the
   // contact forces that makes w exact. A normwise residual would demand the impossible of a matrix
@@ -51,7 +76,7 @@ Certificate certify(const Problem& p, const VectorXd& w, const VectorXd& lambda)
     const double normwise = row_max[i] * w_inf;
     double s = scale[i];
     if (s <= 1000 * row_terms[i] * DBL_EPSILON * normwise) s += normwise;
-    if (s > 0) c.stationarity = std::max(c.stationarity, std::abs(r[i]) / s);
+    if (s > 0 || std::isnan(s)) raise(c.stationarity, std::abs(r[i]) / s);
   }
   return c;
 }

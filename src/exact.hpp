@@ -19,9 +19,9 @@ namespace plate {
 
 // How far (w, lambda) is from solving the complementarity problem; each entry is relative.
 struct Certificate {
-  double violation = 0;            // max_p (phi_p - (S w)_p)_+ / max over nodes |w|
+  double violation = 0;            // max_p (phi_p - (S w)_p)_+ / W, W = max(max over nodes |w|, max_p phi_p)
   double negative_multiplier = 0;  // max_p (-lambda_p)_+ / max_p |lambda_p|
-  double complementarity = 0;      // max_p |lambda_p (w_p - phi_p)| / (max |lambda| max |w|)
+  double complementarity = 0;      // max_p |lambda_p (w_p - phi_p)| / (max |lambda| W)
   double stationarity = 0;         // max_i |K w - F - S^T W lambda|_i / (|K| |w| + |F| + |S^T W lambda|)_i
   double worst() const;
 };

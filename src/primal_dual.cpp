@@ -163,7 +163,7 @@ ExactResult solve_exact_nodes(const Problem& p, const ExactOptions& o, NodeSet i
         << " iterations) and globalisation is off";
     else
       m << "the active-set iterations did not finish in max-iter = " << o.max_iter << " steps";
-  } else if (res.certificate.worst() > o.tol) {
+  } else if (!(res.certificate.worst() <= o.tol)) {  // a NaN entry fails too
     m << certificate_failure(res.certificate, o.tol);
   }
   res.message = m.str();

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -301,6 +302,24 @@ std::string overflow_risk(const Problem& p) {
   std::ostringstream m;
   m << "--obstacle-height (or --obstacle): the obstacle reaches |phi| = " << phi << ", where K w (36 terms of up to " << k
     << " times that) may overflow double precision; state the problem in other units";
+  return m.str();
+}
+
+std::string underflow_risk(const Problem& p) {
+  double phi = 0;
+  for (double v : p.phi)
+    if (std::isfinite(v)) phi = std::max(phi, std::abs(v));
+  const double h2 = std::min(1.0, p.grid.h * p.grid.h), load = p.F.size() ? p.F.cwiseAbs().maxCoeff() : 0.0;
+  std::ostringstream m;
+  if (load > 0 && load < DBL_MIN / DBL_EPSILON) {
+    m << "--load: the load vector reaches only " << load << ", within 16 digits of double precision's underflow ("
+      << DBL_MIN << "); state the problem in other units";
+    return m.str();
+  }
+  if (phi == 0 || phi * h2 >= DBL_MIN / DBL_EPSILON) return "";
+  m << "--obstacle-height (or --obstacle): the obstacle reaches only |phi| = " << phi
+    << ", where w and its terms come within 16 digits of double precision's underflow (" << DBL_MIN
+    << "); state the problem in other units";
   return m.str();
 }
 

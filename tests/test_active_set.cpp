@@ -3,6 +3,7 @@
 // ends a primal-dual iteration that cycles.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "active_set.hpp"
@@ -52,6 +53,44 @@ TEST(ExactSolver, MeetsItsCertificateOnEveryCase) {
         }
       }
     }
+}
+
+// The certificate judges an answer relative to its own size, so it must read the same at any scale
+// and still fail a wrong answer there. The paper's problem on edge sampling, certified, then scaled
+// by s: at s = 1e-200 and 1e200 the scaled answer keeps its certificate; a multiplier put on a row
+// that does not touch fails complementarity (the raw product underflowed to 0, and overflowed to a
+// NaN that std::max passed over); w = 0 fails under an obstacle of height 1e-320 (it passed against
+// a floor of 1e-300); and a NaN in w or lambda fails.
+TEST(Certificate, FailsAWrongAnswerAtAnyScale) {
+  const Problem p = make_problem(paper_scene(), make_grid(16), SamplingSpec{SamplingKind::Edge});
+  const ExactResult r = certified(p);
+  const VectorXd gap = p.sampling.S * r.w - p.phi;
+  int free_row = -1;  // the row furthest from touching
+  for (int q = 0; q < gap.size(); ++q)
+    if (std::isfinite(gap[q]) && r.lambda[q] == 0 && (free_row < 0 || gap[q] > gap[free_row])) free_row = q;
+  ASSERT_GE(free_row, 0);
+  ASSERT_GT(gap[free_row], 1e-3 * max_nodal_abs(r.w));
+  for (double s : {1e-200, 1.0, 1e200}) {
+    SCOPED_TRACE("scale " + std::to_string(std::log10(s)));
+    Problem q = p;
+    for (int k = 0; k < q.phi.size(); ++k) q.phi[k] *= s;  // -inf stays -inf
+    q.F *= s;
+    const VectorXd w = s * r.w, lambda = s * r.lambda;
+    EXPECT_LE(certify(q, w, lambda).worst(), 1e-12);
+    VectorXd pushed = lambda;
+    pushed[free_row] = lambda.cwiseAbs().maxCoeff();
+    EXPECT_GT(certify(q, w, pushed).complementarity, 1e-3);
+  }
+  Problem tiny = p;
+  for (int k = 0; k < tiny.phi.size(); ++k) tiny.phi[k] *= 1e-320 / 0.0625;
+  tiny.F *= 0;
+  const VectorXd zero_w = VectorXd::Zero(r.w.size()), zero_lambda = VectorXd::Zero(r.lambda.size());
+  EXPECT_GT(certify(tiny, zero_w, zero_lambda).violation, 0.5);
+  for (bool in_w : {true, false}) {
+    VectorXd w = r.w, lambda = r.lambda;
+    (in_w ? w[7] : lambda[free_row]) = NAN;
+    EXPECT_FALSE(certify(p, w, lambda).worst() <= 1e-10) << (in_w ? "NaN in w" : "NaN in lambda");
+  }
 }
 
 TEST(ExactSolver, PenaltySolutionsApproachItLinearlyInEps) {

@@ -521,9 +521,10 @@ void set_error_bars(Run& r, const std::vector<plate::ExactLevel>& levels) {
         [k](const ExactLevel& l) { return l.measures->w_at.at(k); });
 }
 
-// A converged answer too large for a double (R = 1e306 gives a force of about 6e308) would be
-// written as nulls with exit 0; it is bad input instead. (A run that did not converge says so, and
-// exits 3; one whose obstacle may have overflowed K w is refused by overflow_risk, problem.hpp.)
+// A converged answer with an output too large for a double would be written as nulls with exit 0;
+// it is bad input instead. (R = 1e306 once came this way, with a force of about 6e308; its
+// certificate's sums now overflow to NaN, which fails it, and overflow_risk names the obstacle. A
+// run that did not converge says so, and exits 3.)
 void refuse_overflow(const plate::Report& r) {
   std::vector<std::pair<std::string, double>> outputs{{"max w", r.measures.max_w.value},
                                                       {"min w", r.measures.min_w.value},
@@ -585,6 +586,9 @@ plate::SolveResult solve_penalty(Run& r, const plate::Problem& problem, plate::V
       progress.step("eps = " + fmt("%g", eps / L4) + ": iteration " + std::to_string(iteration) + ", step " +
                     fmt("%.2e", step));
     };
+  // The penalty's tolerance is tol times the answer's size, which underflows to 0 for a problem
+  // this small: named here, before the scheme refuses a tol the user did not give.
+  if (const std::string why = underflow_risk(problem); !why.empty()) throw std::invalid_argument(why);
   SolveResult result = solve(problem, r.opt);
   xi = contact_force_density(problem, result.w, result.eps);
   return result;
@@ -667,7 +671,8 @@ Outputs solve_grid(const Options& o, Run& r, plate::SceneSolution& scene, plate:
   }
   const Problem& problem = exact ? scene.whole() : *r.penalised;
   if (!result.converged)
-    if (const std::string why = overflow_risk(exact ? scene.solved : *r.penalised); !why.empty()) throw std::invalid_argument(why);
+    for (const auto risk : {overflow_risk, underflow_risk})
+      if (const std::string why = risk(exact ? scene.solved : *r.penalised); !why.empty()) throw std::invalid_argument(why);
   // Everything the outputs state of the answer, once: the exact solver measured its own (the field's
   // extremes, w at the points, the force) as it solved every grid; the penalty's are measured here.
   r.report.violation = constraint_violation(problem, result.w);
