@@ -122,19 +122,19 @@ void circle_crossings(double cx, double cy, double rho, double x0, double x1, do
 
 }  // namespace
 
-std::string kink_misfit(const Grid& g, const EdgeCurve& c) {
+std::string kink_misfit(const Grid& g, const EdgeCurve& c, const KinkBand& band) {
   if (c.kind != EdgeCurve::Kind::Circle) return "the edge is not a circle";
   const double clearance = std::min({c.cx - c.r, g.whole_lx() - c.cx - c.r, c.cy - c.r, g.whole_ly() - c.cy - c.r});
   // The cells where chi is not 0 reach 2.5 + sqrt(2) cells past the rim; their nodes must all carry
   // unknowns. A disk two cells across its radius keeps its centre out of every cell the rim cuts.
-  if (c.r >= kKinkMinRadiusCells * g.h && clearance >= (kKinkZeroCells + 1.5) * g.h) return "";
+  if (c.r >= kKinkMinRadiusCells * g.h && clearance >= (band.zero + 1.5) * g.h) return "";
   std::ostringstream m;
-  m << "the circle must be at least " << kKinkMinRadiusCells << " cells in radius and " << kKinkZeroCells + 1.5
+  m << "the circle must be at least " << kKinkMinRadiusCells << " cells in radius and " << band.zero + 1.5
     << " cells from every clamped edge on this grid (h = " << g.h << ")";
   return m.str();
 }
 
-bool kink_fits(const Grid& g, const EdgeCurve& c) { return kink_misfit(g, c).empty(); }
+bool kink_fits(const Grid& g, const EdgeCurve& c, const KinkBand& band) { return kink_misfit(g, c, band).empty(); }
 
 // @region kink-knots
 // The knots of (D31)'s rows. Two cells apart, the rows ask more of the plate than its trace on the
@@ -147,16 +147,19 @@ double kink_knot_cells(double r, double h) {
 }
 // @end kink-knots
 
-KinkEnrichment make_kink_enrichment(const Grid& g, const EdgeCurve& circle, int knots) {
+KinkEnrichment make_kink_enrichment(const Grid& g, const EdgeCurve& circle, int knots, const KinkBand& band) {
+  // Not finite, or not ordered: refused before any comparison that a NaN would pass.
+  if (!(band.flat > std::sqrt(2.0) && band.zero > band.flat && std::isfinite(band.zero)))
+    throw std::invalid_argument("make_kink_enrichment: the cut-off's band must have sqrt(2) < flat < zero cells, both finite");
   if (circle.kind != EdgeCurve::Kind::Circle) throw std::invalid_argument("--enrich ring needs a circle (a cylinder or --edge circle:)");
   if (knots < 8 || knots % 4) throw std::invalid_argument("make_kink_enrichment: the knots must be a multiple of 4, at least 8");
-  if (const std::string why = kink_misfit(g, circle); !why.empty()) throw std::invalid_argument("--enrich ring: " + why);
+  if (const std::string why = kink_misfit(g, circle, band); !why.empty()) throw std::invalid_argument("--enrich ring: " + why);
   const double tol = 1e-9 * g.h;
   if ((g.mirror_x && std::abs(circle.cx - g.lx()) > tol) || (g.mirror_y && std::abs(circle.cy - g.ly()) > tol))
     throw std::logic_error("make_kink_enrichment: the circle's centre is not on the part's mirror lines");
   KinkEnrichment e;
   e.cx = circle.cx, e.cy = circle.cy, e.a = circle.r;
-  e.inner = kKinkFlatCells * g.h, e.outer = kKinkZeroCells * g.h;
+  e.inner = band.flat * g.h, e.outer = band.zero * g.h;
   e.knots = knots;
   // Mirror images of spline j: about x = cx, theta -> pi - theta; about y = cy, theta -> -theta.
   const int M = e.knots;

@@ -30,6 +30,12 @@ namespace plate {
 // The cut-off chi of (D31): 1 up to kKinkFlatCells cells outside the rim (every square the rim
 // cuts lies within sqrt(2) cells of it), 0 from kKinkZeroCells cells on.
 constexpr double kKinkFlatCells = 1.5, kKinkZeroCells = 2.5;
+// The band of chi in cells, the defaults above unless a study widens it (kink_study's stability
+// section): flat must exceed sqrt(2), so that every square the rim cuts lies where chi = 1, and
+// zero must exceed flat.
+struct KinkBand {
+  double flat = kKinkFlatCells, zero = kKinkZeroCells;
+};
 // (D31) fits a grid whose circle is at least this many cells in radius (so no square the rim cuts
 // holds its centre) and kKinkZeroCells + 1.5 cells from every clamped edge.
 constexpr double kKinkMinRadiusCells = 2;
@@ -49,6 +55,7 @@ constexpr KinkRulePoints kKinkRule[3] = {{6, 5}, {6, 6}, {8, 8}};
 struct EnrichSpec {
   enum class Kind { None, Ring };
   Kind kind = Kind::None;
+  KinkBand band;
   bool on() const { return kind == Kind::Ring; }
 };
 
@@ -62,18 +69,18 @@ struct KinkEnrichment {
 };
 
 // Whether (D31) fits grid g: the circle at least two cells in radius, and every square where chi is
-// not 0 clear of the clamped edges (kKinkZeroCells + 1.5 cells from the rim). A coarser grid of a
+// not 0 clear of the clamped edges (band.zero + 1.5 cells from the rim). A coarser grid of a
 // sequence that fails this is solved in the plain space.
-bool kink_fits(const Grid& g, const EdgeCurve& circle);
+bool kink_fits(const Grid& g, const EdgeCurve& circle, const KinkBand& band = {});
 // The rows' knot spacing in cells, with (D31) on a circle of radius r on cells of side h.
 double kink_knot_cells(double r, double h);
 // Why (D31) does not fit grid g, in words; empty where it fits.
-std::string kink_misfit(const Grid& g, const EdgeCurve& circle);
+std::string kink_misfit(const Grid& g, const EdgeCurve& circle, const KinkBand& band = {});
 
 // The enrichment of (D31) for a circle on grid g (a whole plate or a part), with the `knots` of the
 // edge rows' splines; throws std::invalid_argument naming --enrich if the curve is not a circle or
-// (D31) does not fit.
-KinkEnrichment make_kink_enrichment(const Grid& g, const EdgeCurve& circle, int knots);
+// (D31) does not fit, or std::invalid_argument for a band that breaks KinkBand's rules.
+KinkEnrichment make_kink_enrichment(const Grid& g, const EdgeCurve& circle, int knots, const KinkBand& band = {});
 
 // F_k of (D31) at (x, y): value and derivatives (before the interpolant is subtracted).
 using KinkValue = PlaneDerivatives;

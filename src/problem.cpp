@@ -170,7 +170,7 @@ void append_rim_points(Problem& p, const std::vector<double>& angles) {
 // Edge sampling only: its interior rows are nodal values, where psi_k vanishes; a Gauss row inside
 // a square the rim cuts would need psi_k at its point.
 bool kink_on(const Grid& g, const Scene& s, const SamplingSpec& spec) {
-  return spec.enrich.on() && spec.kind == SamplingKind::Edge && kink_fits(g, s.edge);
+  return spec.enrich.on() && spec.kind == SamplingKind::Edge && kink_fits(g, s.edge, spec.enrich.band);
 }
 
 // @region kink-rows
@@ -350,7 +350,7 @@ Problem make_problem(const Scene& s, const Grid& g, const SamplingSpec& spec) {
   p.F = assemble_load(g, s.load, "--load");
   // (D31) on every grid it fits; a coarser grid of a sequence that it does not fit is plain.
   if (kink_on(g, s, spec)) {
-    attach_kink(p, make_kink_enrichment(g, s.edge, spline_knots(s.edge.r, g.h, rows_on(g, s, spec))));
+    attach_kink(p, make_kink_enrichment(g, s.edge, spline_knots(s.edge.r, g.h, rows_on(g, s, spec)), spec.enrich.band));
     KinkBlocks blocks = assemble_kink_blocks(g, *p.kink, p.kink_interp, s.load);
     p.K = with_border(p.K, blocks.border);
     p.enrichment_block = std::move(blocks.border);

@@ -3,12 +3,13 @@
 // the rim-contact series solves), the exact solver with the default rows in the plain space and
 // with the kink carried, on n = 16 ... 256 (20 ... 320 on the 1.25 plate): the distance of max w
 // (the field's peak), the total force and the line load point by point from the series, with the
-// observed orders. Writes results/kink.{md,csv}. Run by `make kink`; `kink_study --help` lists the
-// options.
+// observed orders; then the stability section (stability(), below). Writes results/kink.{md,csv}
+// and results/kink_stability.csv. Run by `make kink`; `kink_study --help` lists the options.
 #include <CLI/CLI.hpp>
 
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "active_set.hpp"
@@ -184,6 +185,139 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<SceneCase>&
   return o.str();
 }
 
+// Issue 43's stability questions: how the cut-off's band (its flat part and where it reaches 0,
+// in cells) moves the condition number and the errors on the paper's scene, and whether the
+// certificate holds where (D31) is hardest to carry: the smallest disk it fits, a disk as close to
+// the clamped edge as it fits, an obstacle height near the ends of double precision, a cylinder of
+// height 0 that a downward load presses the plate onto, and a polygon with an acute corner, which
+// (D31) does not carry (a circle only) and `plate` then solves in the plain space.
+struct StabilityRow {
+  std::string study, scene;
+  int n = 0;
+  KinkBand band;
+  std::string space;
+  bool certified = false;
+  double cond = NAN, max_w = 0, force = 0, err_w = NAN, err_f = NAN;
+  double per = 1;  // max w and the force are reported divided by this: the height, where it is extreme
+};
+
+constexpr KinkBand kStudiedBands[] = {{1.5, 2.5}, {1.5, 3.5}, {1.5, 5.5}, {2.5, 4.5}, {4, 8}};
+
+StabilityRow solve_stability(const std::string& study, const std::string& key, const Scene& scene, int n, KinkBand band,
+                             const RimAnswer* series) {
+  SamplingSpec spec{SamplingKind::Edge};
+  spec.enrich.kind = EnrichSpec::Kind::Ring;
+  spec.enrich.band = band;
+  std::cerr << "kink_study: " << study << ", " << key << ", n = " << n << "\n";
+  const SceneSolution x = solve_exact_scene(scene, n, spec, ExactOptions{});
+  StabilityRow r;
+  r.study = study, r.scene = key, r.n = n, r.band = band;
+  r.space = x.solved.kink ? "kink" : "plain";
+  r.certified = x.result.converged;
+  const Problem& p = x.whole();
+  r.max_w = extremum_of_w(p, x.result.w, +1).value;
+  r.force = total_contact_force(p, x.result.lambda);
+  if (series) {
+    r.err_w = std::abs(r.max_w - series->finest.max_w().w) / series->finest.max_w().w;
+    r.err_f = std::abs(r.force - series->finest.total_force()) / series->finest.total_force();
+  }
+  if (n <= kCondCells) r.cond = condition_number(x.solved.K);
+  if (!r.certified) std::cerr << "kink_study: " << study << " " << key << " n = " << n << ": " << x.result.message << "\n";
+  return r;
+}
+
+// A triangle with a corner of about 22 degrees at (0.8, 0.45), lifted to 0.05, no constraint
+// outside; its sides are the edge rows' polygon.
+Scene acute_triangle() {
+  const double vx[3] = {0.3, 0.8, 0.3}, vy[3] = {0.3, 0.45, 0.5};
+  Scene s = Scene::rectangle(1, 1).over([vx, vy](double x, double y) {
+    for (int k = 0; k < 3; ++k) {  // inside: left of every side, the vertices counter-clockwise
+      const int l = (k + 1) % 3;
+      if ((vx[l] - vx[k]) * (y - vy[k]) - (vy[l] - vy[k]) * (x - vx[k]) < 0) return -HUGE_VAL;
+    }
+    return 0.05;
+  });
+  s.edge = parse_edge("polygon:0.3,0.3;0.8,0.45;0.3,0.5");
+  return s;
+}
+
+std::vector<StabilityRow> stability(int finest) {
+  std::vector<StabilityRow> rows;
+  const Scene paper = paper_scene();
+  const RimAnswer series = rim_answer(paper);
+  for (const KinkBand& b : kStudiedBands)
+    for (int n : {64, 128}) rows.push_back(solve_stability("band", "paper", paper, n, b, &series));
+  struct Hard {
+    std::string key;
+    Scene scene;
+    int coarsest, finest;
+    double per = 1;
+  };
+  const std::vector<Hard> hard = {
+      {"smallest-disk", Scene::rectangle(1, 1).over(Cylinder{0.5, 0.5, 1.0 / 32, 0.0625}), 64, 256},
+      {"near-edge", Scene::rectangle(1, 1).over(Cylinder{0.3125, 0.5, 0.25, 0.0625}), 64, 256},
+      {"height-1e-300", paper_scene(1e-300), 64, 64, 1e-300},
+      {"height-1e+300", paper_scene(1e300), 64, 64, 1e300},
+      {"height-0-pressed", Scene::rectangle(1, 1).over(Cylinder{0.5, 0.5, 0.25, 0}).loaded(-1.0), 64, 256},
+      {"acute-triangle", acute_triangle(), 64, 128}};
+  for (const Hard& c : hard) {
+    // The series measures a cylinder's scene with no load where its premise (contact all round)
+    // holds. On the smallest disk its bars stop shrinking at 1e-14 of max w, so it never counts as
+    // settled; a bar that far below every error here still makes it the yardstick.
+    std::optional<RimAnswer> yardstick;
+    if (c.scene.cylinder && c.per == 1 && c.scene.cylinder->height > 0 && c.scene.uniform_load == 0.0) {
+      RimAnswer a = rim_answer(c.scene);
+      const double w = a.finest.max_w().w, f = a.finest.total_force();
+      if (a.premise.holds && (a.settled || (a.bar_max_w <= 1e-12 * w && a.bar_force <= 1e-10 * f))) yardstick = std::move(a);
+    }
+    for (int n = c.coarsest; n <= std::min(c.finest, finest); n *= 2) {
+      rows.push_back(solve_stability("hard", c.key, c.scene, n, KinkBand{}, yardstick ? &*yardstick : nullptr));
+      rows.back().per = c.per;
+    }
+  }
+  return rows;
+}
+
+std::string stability_csv(const std::vector<StabilityRow>& rows) {
+  std::ostringstream o;
+  o << "# kink_study, stability: exact solves with the default rows and (D31) asked for (plate --enrich auto),\n"
+       "# 'band': the paper's scene with chi flat to `flat` cells outside the rim and 0 from `zero` cells on,\n"
+       "# errors relative to the rim-contact series; 'hard': scenes where (D31) is hardest to carry, with the\n"
+       "# default band (space: plain where it does not fit or the edge is no circle). cond as in kink.csv.\n"
+       "# max_w and force are divided by the obstacle's height where it is not 0. Made by build/kink_study\n"
+       "study,scene,n,flat,zero,space,certified,cond,max_w,force,err_max_w,err_total_force\n";
+  for (const StabilityRow& r : rows) {
+    o << r.study << "," << r.scene << "," << r.n << "," << fmt("%g", r.band.flat) << "," << fmt("%g", r.band.zero) << ","
+      << r.space << "," << (r.certified ? 1 : 0) << "," << (std::isfinite(r.cond) ? fmt("%.2e", r.cond) : "") << ","
+      << fmt("%.12g", r.max_w / r.per) << "," << fmt("%.11g", r.force / r.per) << ","
+      << (std::isfinite(r.err_w) ? fmt("%.2e", r.err_w) : "") << "," << (std::isfinite(r.err_f) ? fmt("%.2e", r.err_f) : "") << "\n";
+  }
+  return o.str();
+}
+
+std::string stability_markdown(const std::vector<StabilityRow>& rows) {
+  std::ostringstream o;
+  o << "### Stability\n\n| band (cells) | n | cond(K) | max w, relative error | total force, relative error | certified |\n"
+       "|---|---:|---:|---:|---:|:---:|\n";
+  for (const StabilityRow& r : rows)
+    if (r.study == "band")
+      o << "| " << fmt("%g", r.band.flat) << " to " << fmt("%g", r.band.zero) << " | " << r.n << " | "
+        << (std::isfinite(r.cond) ? fmt("%.2e", r.cond) : "—") << " | " << fmt("%.1e", r.err_w) << " | " << fmt("%.1e", r.err_f)
+        << " | " << (r.certified ? "yes" : "**no**") << " |\n";
+  o << "\nTable: " << words("kink_study.band_caption") << "\n\n";
+  o << "| scene | n | space | cond(K) | max w | vs series | total force | vs series | certified |\n"
+       "|---|---:|---|---:|---:|---:|---:|---:|:---:|\n";
+  for (const StabilityRow& r : rows)
+    if (r.study == "hard") {
+      o << "| " << r.scene << " | " << r.n << " | " << (r.space == "kink" ? "kink carried" : "plain") << " | "
+        << (std::isfinite(r.cond) ? fmt("%.2e", r.cond) : "—") << " | " << fmt("%.10g", r.max_w / r.per) << " | "
+        << (std::isfinite(r.err_w) ? fmt("%.1e", r.err_w) : "—") << " | " << fmt("%.9g", r.force / r.per) << " | "
+        << (std::isfinite(r.err_f) ? fmt("%.1e", r.err_f) : "—") << " | " << (r.certified ? "yes" : "**no**") << " |\n";
+    }
+  o << "\nTable: " << words("kink_study.hard_caption") << "\n";
+  return o.str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -216,9 +350,13 @@ int main(int argc, char** argv) {
           rows.push_back(r);
         }
     }
+    const std::vector<StabilityRow> stable = stability(finest);
     write_file_atomically(out + "/kink.csv", csv(rows));
-    write_file_atomically(out + "/kink.md", markdown(rows, cases));
+    write_file_atomically(out + "/kink_stability.csv", stability_csv(stable));
+    write_file_atomically(out + "/kink.md", markdown(rows, cases) + "\n" + stability_markdown(stable));
     for (const Row& r : rows)
+      if (!r.certified) return kNotConverged;
+    for (const StabilityRow& r : stable)
       if (!r.certified) return kNotConverged;
     return kSuccess;
   });

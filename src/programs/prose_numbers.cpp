@@ -510,6 +510,63 @@ void kink_numbers(Numbers& num, const std::string& results) {
   }
 }
 
+// The stability section of the kink study (results/kink_stability.csv): the spread of the condition
+// number and of the errors over the cut-off's bands on n = 128, the smallest disk's orders against
+// the series, and how many hard runs were certified. paper.md says that divided by the height the
+// answers at 1e-300 and 1e300 are the paper's height's to round-off, and that the
+// triangle keeps the plain space; a rebuild that finds otherwise stops here.
+void kink_stability_numbers(Numbers& num, const std::string& results) {
+  const CsvTable t = read_csv_table(results + "/kink_stability.csv");
+  const std::string src = "results/kink_stability.csv";
+  Range cond, ew, ef, order_w, order_f, flat, zero;
+  int hard = 0, certified = 0;
+  std::vector<std::size_t> smallest;
+  double paper_w = NAN, paper_f = NAN;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const std::string study = t.text(r, "study"), scene = t.text(r, "scene"), n = t.text(r, "n");
+    if (study == "band" && t.text(r, "flat") == "1.5" && t.text(r, "zero") == "2.5" && n == "64")
+      paper_w = t.number(r, "max_w") / paper_scene().cylinder->height, paper_f = t.number(r, "force") / paper_scene().cylinder->height;
+    if (study == "band") flat.add(t.number(r, "flat")), zero.add(t.number(r, "zero"));
+    if (study == "band" && n == "128") cond.add(t.number(r, "cond")), ew.add(t.number(r, "err_max_w")), ef.add(t.number(r, "err_total_force"));
+    if (study != "hard") continue;
+    ++hard, certified += t.text(r, "certified") == "1";
+    if (scene == "smallest-disk") smallest.push_back(r);
+    if (scene == "acute-triangle" && t.text(r, "space") != "plain")
+      throw std::runtime_error(t.path + ": the triangle carries (D31); paper.md says it keeps the plain space");
+  }
+  for (std::size_t r = 0; r < t.rows.size(); ++r)
+    // Within the printed digits' last unit and round-off: the problem is homogeneous in the height.
+    if (t.text(r, "scene").rfind("height-1e", 0) == 0 &&
+        !(std::abs(t.number(r, "max_w") - paper_w) <= 1e-11 * paper_w && std::abs(t.number(r, "force") - paper_f) <= 1e-10 * paper_f))
+      throw std::runtime_error(t.path + ": " + t.text(r, "scene") + " divided by its height is not the paper's height's answer to round-off; paper.md says it is");
+  // paper.md: on n = 128 the default band has the least error in max w and the largest in the force.
+  for (std::size_t r = 0; r < t.rows.size(); ++r)
+    if (t.text(r, "study") == "band" && t.text(r, "n") == "128" && t.text(r, "flat") == "1.5" && t.text(r, "zero") == "2.5" &&
+        !(t.number(r, "err_max_w") == ew.lo && t.number(r, "err_total_force") == ef.hi))
+      throw std::runtime_error(t.path + ": the default band is not the best in max w and the worst in the force on n = 128; paper.md says it is");
+  for (std::size_t k = 1; k < smallest.size(); ++k) {
+    order_w.add(std::log2(t.number(smallest[k - 1], "err_max_w") / t.number(smallest[k], "err_max_w")));
+    order_f.add(std::log2(t.number(smallest[k - 1], "err_total_force") / t.number(smallest[k], "err_total_force")));
+  }
+  const auto e1 = [](double v) { return fmt("%.1e", v); };
+  const auto f1 = [](double v) { return fmt("%.1f", v); };
+  const auto g = [](double v) { return fmt("%g", v); };
+  num.put_range("kink_stability.band_flat", flat, g, src + " band rows: flat");
+  num.put_range("kink_stability.band_zero", zero, g, src + " band rows: zero");
+  num.put_range("kink_stability.band_cond_128", cond, e1, src + " band rows n = 128: cond");
+  num.put_range("kink_stability.band_err_max_w_128", ew, e1, src + " band rows n = 128: err_max_w");
+  num.put_range("kink_stability.band_err_total_force_128", ef, e1, src + " band rows n = 128: err_total_force");
+  num.put_range("kink_stability.smallest_disk_order_max_w", order_w, f1, src + " smallest-disk: log2 of err_max_w over the grid before");
+  num.put_range("kink_stability.smallest_disk_order_total_force", order_f, f1, src + " smallest-disk: log2 of err_total_force over the grid before");
+  if (!smallest.empty()) {
+    const std::size_t last = smallest.back();
+    num.put("kink_stability.smallest_disk_finest_n", t.text(last, "n"), src + " smallest-disk: the finest n");
+    num.put("kink_stability.smallest_disk_err_max_w_finest", e1(t.number(last, "err_max_w")), src + " smallest-disk finest: err_max_w");
+  }
+  num.put("kink_stability.hard_runs", std::to_string(hard), src + " hard rows");
+  num.put("kink_stability.hard_certified", std::to_string(certified), src + " hard rows with certified = 1");
+}
+
 // Package versions of the machine that built the document (results/versions.csv, from dpkg).
 void version_numbers(Numbers& num, const std::string& results) {
   const CsvTable t = read_csv_table(results + "/versions.csv");
@@ -613,6 +670,7 @@ int main(int argc, char** argv) {
     liftoff_numbers(fixed, results);
     liftoff_dip_numbers(fixed, results);
     kink_numbers(fixed, results);
+    kink_stability_numbers(fixed, results);
     linear_history_numbers(fixed, results);
     published_numbers(fixed, reference);
     model_numbers(fixed);
