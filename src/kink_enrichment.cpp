@@ -36,9 +36,13 @@ Spline3 cubic_bspline(double x) {
 struct Radial {
   double g = 0, g1 = 0, g2 = 0;
 };
-Radial kink_radial(double d, double a) {
+// Divided by unit^3 (KinkEnrichment::unit, the cell): psi_k is then of the size of a nodal basis
+// function and its blocks of the size of K's. Unscaled they went like h^4 against K's h^-2, and for
+// a plate of side 1e-80 they underflowed (CHOLMOD found the system not positive definite).
+Radial kink_radial(double d, double a, double unit) {
   if (!(d > 0)) return {};
-  return {d * d * d * (1 - d / (2 * a)), 3 * d * d - 2 * d * d * d / a, 6 * d - 6 * d * d / a};
+  const double s = 1 / (unit * unit * unit);
+  return {s * (d * d * d * (1 - d / (2 * a))), s * (3 * d * d - 2 * d * d * d / a), s * (6 * d - 6 * d * d / a)};
 }
 
 // chi(d) and its first two derivatives: the quintic smoothstep, C^2, from 1 at inner to 0 at outer.
@@ -159,7 +163,7 @@ KinkEnrichment make_kink_enrichment(const Grid& g, const EdgeCurve& circle, int 
     throw std::logic_error("make_kink_enrichment: the circle's centre is not on the part's mirror lines");
   KinkEnrichment e;
   e.cx = circle.cx, e.cy = circle.cy, e.a = circle.r;
-  e.inner = band.flat * g.h, e.outer = band.zero * g.h;
+  e.inner = band.flat * g.h, e.outer = band.zero * g.h, e.unit = g.h;
   e.knots = knots;
   // Mirror images of spline j: about x = cx, theta -> pi - theta; about y = cy, theta -> -theta.
   const int M = e.knots;
@@ -180,7 +184,7 @@ KinkValue kink_profile(const KinkEnrichment& e, int k, double x, double y) {
   KinkValue v;
   const double dx = x - e.cx, dy = y - e.cy, r = std::hypot(dx, dy);
   if (!(r > e.a)) return v;  // F_k is 0 on and inside the rim
-  const Radial g = kink_radial(r - e.a, e.a);
+  const Radial g = kink_radial(r - e.a, e.a, e.unit);
   const double t = std::atan2(dy, dx);
   const SplinesAt s = splines_at(e, t < 0 ? t + 2 * M_PI : t);
   for (int i = 0; i < s.count; ++i)
@@ -202,7 +206,7 @@ SpMat kink_interpolant(const Grid& g, const KinkEnrichment& e) {
       // Only the nodes of squares where chi is not 0 are ever read: within outer + sqrt(2) cells.
       if (r - e.a >= e.outer + 1.5 * g.h) continue;
       if (!(r > e.a)) continue;
-      const Radial gr = kink_radial(r - e.a, e.a);
+      const Radial gr = kink_radial(r - e.a, e.a, e.unit);
       const double th = std::atan2(dy, dx);
       const SplinesAt sp = splines_at(e, th < 0 ? th + 2 * M_PI : th);
       for (int s = 0; s < sp.count; ++s) {
@@ -307,7 +311,7 @@ static void cell_blocks(const Grid& g, const KinkEnrichment& e, const Field& f, 
     const double r = cb.r[p];
     const int sr = cb.slope_row[p];
     if (r > e.a) {
-      const Radial F = kink_radial(r - e.a, e.a);
+      const Radial F = kink_radial(r - e.a, e.a, e.unit);
       for (int k = 0; k < ray.sp.count; ++k) {
         const int l = ray.idx[k];
         add_profile(F, ray.sp.b[k], 1 / r, D(np + p, l), sr < 0 ? nullptr : &D(sr, l), D(p, l));
@@ -452,7 +456,7 @@ KinkValue kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue
   const Radial chi = cutoff(e, r - e.a);
   KinkValue D;
   add(D, interpolant, -1.0);
-  const Radial F = kink_radial(r - e.a, e.a);
+  const Radial F = kink_radial(r - e.a, e.a, e.unit);
   if (r > e.a) {
     const double th = std::atan2(dy, dx);
     const SplinesAt sp = splines_at(e, th < 0 ? th + 2 * M_PI : th);
@@ -478,7 +482,7 @@ double kink_value(const KinkEnrichment& e, const VectorXd& c, double interpolant
   const double dx = x - e.cx, dy = y - e.cy, r = std::hypot(dx, dy);
   double D = -interpolant;
   if (r > e.a) {
-    const Radial F = kink_radial(r - e.a, e.a);
+    const Radial F = kink_radial(r - e.a, e.a, e.unit);
     const double th = std::atan2(dy, dx);
     const SplinesAt sp = splines_at(e, th < 0 ? th + 2 * M_PI : th);
     for (int i = 0; i < sp.count; ++i) D += c[e.function_of_spline[sp.j[i]]] * (F.g * sp.b[i].v);

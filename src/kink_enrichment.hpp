@@ -2,10 +2,10 @@
 // plate rests on the rim r = a, its third normal derivative jumps by the line load q(theta); a
 // bicubic cut by the circle cannot follow that, and the whole plate pays for it at order 3. The
 // space is widened by
-//   psi_k = chi (F_k - I_h F_k),   F_k(r, theta) = (r - a)_+^3 (1 - (r - a) / (2a)) B_k(theta),
+//   psi_k = chi (F_k - I_h F_k),   F_k(r, theta) = (r - a)_+^3 (1 - (r - a) / (2a)) B_k(theta) / h^3,
 // B_k the periodic cubic B-splines of the angle, I_h the grid's Hermite interpolant (nodal values,
 // slopes and twist), chi(d) a cut-off of the distance d = r - a: 1 up to 1.5 cells outside the rim,
-// 0 from 2.5 cells on. F_k is C^2 with its third radial derivative jumping by 6 B_k at the rim, so
+// 0 from 2.5 cells on. F_k is C^2 with its third radial derivative jumping by 6 B_k / h^3 at the rim, so
 // psi_k is in H^2 (the space stays conforming) and carries the jump; its fourth jumps by -2/a times
 // that, as the plate's equation on either side of a circle demands (D32). Subtracting I_h F_k makes
 // psi_k vanish with its slopes and twist at every node: the grid's unknowns stay the nodal values of
@@ -62,6 +62,7 @@ struct EnrichSpec {
 struct KinkEnrichment {
   double cx = 0, cy = 0, a = 0;
   double inner = 0, outer = 0;          // chi = 1 for d <= inner, 0 for d >= outer
+  double unit = 1;                      // F_k is divided by unit^3 (the cell h^3: kink_enrichment.cpp)
   int knots = 0;                        // M: periodic splines on the whole circle, centred at 2 pi j / M
   std::vector<int> function_of_spline;  // spline j belongs to function function_of_spline[j]
   int functions = 0;

@@ -104,14 +104,15 @@ TEST(KinkEnrichment, BlocksMatchABruteForceQuadrature) {
 }
 
 // psi_k vanishes with its slopes and twist at every node, so the grid's unknowns are the field's
-// nodal values; it is C^1 across cell sides; and its third radial derivative jumps by 6 B_k at the
+// nodal values; it is C^1 across cell sides; and its third radial derivative jumps by 6 B_k / h^3 at the
 // rim (read off by one-sided differences), the kink of (D31).
 TEST(KinkEnrichment, VanishesAtNodesIsC1AndCarriesTheJump) {
   const Grid g = make_grid(32);
   const KinkEnrichment e = make_kink_enrichment(g, kRim, 64);
   const SpMat P = kink_interpolant(g, e);
   VectorXd c(e.size());
-  for (int k = 0; k < e.size(); ++k) c[k] = 1 + 0.5 * std::sin(0.3 * k);
+  // Times h^3, which F_k divides by: the field is then sum (1 + sin / 2) of the unscaled profiles.
+  for (int k = 0; k < e.size(); ++k) c[k] = (1 + 0.5 * std::sin(0.3 * k)) * std::pow(e.unit, 3);
   const VectorXd Pc = P * c;
   double size = 0, at_nodes = 0;
   for (int j = 1; j < g.ny; ++j)
@@ -154,9 +155,9 @@ TEST(KinkEnrichment, CarriesTheFourthDerivativesJumpThatACircleForces) {
   // Half a spacing from spline k's centre, between knots, where B_k''' does not jump under the stencil:
   // B_k = 23/48 and B_k'' = -1 / (2 spacing^2) there.
   const double spacing = 2 * M_PI / e.knots, theta = (k + 0.5) * spacing, B = 23.0 / 48, B2 = -0.5 / (spacing * spacing);
-  auto lap = [&](double x, double y) {
+  auto lap = [&](double x, double y) {  // of the unscaled profile: F_k times h^3
     const KinkValue v = kink_profile(e, k, x, y);
-    return v.wxx + v.wyy;
+    return (v.wxx + v.wyy) * std::pow(e.unit, 3);
   };
   auto bilap = [&](double d) {
     const double x = 0.5 + (e.a + d) * std::cos(theta), y = 0.5 + (e.a + d) * std::sin(theta), s = d / 8;

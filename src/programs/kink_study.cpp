@@ -198,7 +198,7 @@ struct StabilityRow {
   std::string space;
   bool certified = false;
   double cond = NAN, max_w = 0, force = 0, err_w = NAN, err_f = NAN;
-  double per = 1;  // max w and the force are reported divided by this: the height, where it is extreme
+  double per = 1, per_force = 1;  // max w and the force are reported divided by these (where the scene is scaled)
 };
 
 constexpr KinkBand kStudiedBands[] = {{1.5, 2.5}, {1.5, 3.5}, {1.5, 5.5}, {2.5, 4.5}, {4, 8}};
@@ -251,13 +251,19 @@ std::vector<StabilityRow> stability(int finest) {
     std::string key;
     Scene scene;
     int coarsest, finest;
-    double per = 1;
+    double per = 1, per_force = 1;
+  };
+  // The paper's scene with every length times L (and the height with them): w scales with L and the
+  // force with 1 / L, so divided by those it is the paper's answer, if the arithmetic holds.
+  const auto shrunk = [](double L) {
+    return Scene::rectangle(L, L).over(Cylinder{0.5 * L, 0.5 * L, 0.25 * L, paper_scene().cylinder->height * L});
   };
   const std::vector<Hard> hard = {
       {"smallest-disk", Scene::rectangle(1, 1).over(Cylinder{0.5, 0.5, 1.0 / 32, 0.0625}), 64, 256},
       {"near-edge", Scene::rectangle(1, 1).over(Cylinder{0.3125, 0.5, 0.25, 0.0625}), 64, 256},
-      {"height-1e-300", paper_scene(1e-300), 64, 64, 1e-300},
-      {"height-1e+300", paper_scene(1e300), 64, 64, 1e300},
+      {"height-1e-300", paper_scene(1e-300), 64, 64, 1e-300, 1e-300},
+      {"height-1e+300", paper_scene(1e300), 64, 64, 1e300, 1e300},
+      {"side-1e-80", shrunk(1e-80), 64, 64, 1e-80, 1e80},
       {"height-0-pressed", Scene::rectangle(1, 1).over(Cylinder{0.5, 0.5, 0.25, 0}).loaded(-1.0), 64, 256},
       {"acute-triangle", acute_triangle(), 64, 128}};
   for (const Hard& c : hard) {
@@ -265,14 +271,14 @@ std::vector<StabilityRow> stability(int finest) {
     // holds. On the smallest disk its bars stop shrinking at 1e-14 of max w, so it never counts as
     // settled; a bar that far below every error here still makes it the yardstick.
     std::optional<RimAnswer> yardstick;
-    if (c.scene.cylinder && c.per == 1 && c.scene.cylinder->height > 0 && c.scene.uniform_load == 0.0) {
+    if (c.scene.cylinder && c.per == 1 && c.per_force == 1 && c.scene.cylinder->height > 0 && c.scene.uniform_load == 0.0) {
       RimAnswer a = rim_answer(c.scene);
       const double w = a.finest.max_w().w, f = a.finest.total_force();
       if (a.premise.holds && (a.settled || (a.bar_max_w <= 1e-12 * w && a.bar_force <= 1e-10 * f))) yardstick = std::move(a);
     }
     for (int n = c.coarsest; n <= std::min(c.finest, finest); n *= 2) {
       rows.push_back(solve_stability("hard", c.key, c.scene, n, KinkBand{}, yardstick ? &*yardstick : nullptr));
-      rows.back().per = c.per;
+      rows.back().per = c.per, rows.back().per_force = c.per_force;
     }
   }
   return rows;
@@ -284,12 +290,13 @@ std::string stability_csv(const std::vector<StabilityRow>& rows) {
        "# 'band': the paper's scene with chi flat to `flat` cells outside the rim and 0 from `zero` cells on,\n"
        "# errors relative to the rim-contact series; 'hard': scenes where (D31) is hardest to carry, with the\n"
        "# default band (space: plain where it does not fit or the edge is no circle). cond as in kink.csv.\n"
-       "# max_w and force are divided by the obstacle's height where it is not 0. Made by build/kink_study\n"
+       "# On the scaled scenes max_w and force are divided by the height (heights) or by L and 1 / L (side L).\n"
+       "# Made by build/kink_study\n"
        "study,scene,n,flat,zero,space,certified,cond,max_w,force,err_max_w,err_total_force\n";
   for (const StabilityRow& r : rows) {
     o << r.study << "," << r.scene << "," << r.n << "," << fmt("%g", r.band.flat) << "," << fmt("%g", r.band.zero) << ","
       << r.space << "," << (r.certified ? 1 : 0) << "," << (std::isfinite(r.cond) ? fmt("%.2e", r.cond) : "") << ","
-      << fmt("%.12g", r.max_w / r.per) << "," << fmt("%.11g", r.force / r.per) << ","
+      << fmt("%.12g", r.max_w / r.per) << "," << fmt("%.11g", r.force / r.per_force) << ","
       << (std::isfinite(r.err_w) ? fmt("%.2e", r.err_w) : "") << "," << (std::isfinite(r.err_f) ? fmt("%.2e", r.err_f) : "") << "\n";
   }
   return o.str();
@@ -311,7 +318,7 @@ std::string stability_markdown(const std::vector<StabilityRow>& rows) {
     if (r.study == "hard") {
       o << "| " << r.scene << " | " << r.n << " | " << (r.space == "kink" ? "kink carried" : "plain") << " | "
         << (std::isfinite(r.cond) ? fmt("%.2e", r.cond) : "—") << " | " << fmt("%.10g", r.max_w / r.per) << " | "
-        << (std::isfinite(r.err_w) ? fmt("%.1e", r.err_w) : "—") << " | " << fmt("%.9g", r.force / r.per) << " | "
+        << (std::isfinite(r.err_w) ? fmt("%.1e", r.err_w) : "—") << " | " << fmt("%.9g", r.force / r.per_force) << " | "
         << (std::isfinite(r.err_f) ? fmt("%.1e", r.err_f) : "—") << " | " << (r.certified ? "yes" : "**no**") << " |\n";
     }
   o << "\nTable: " << words("kink_study.hard_caption") << "\n";
