@@ -194,6 +194,23 @@ TEST(KinkEnrichment, RefusesABandThatBreaksItsRules) {
   EXPECT_NEAR(make_kink_enrichment(make_grid(64), kRim, 32, wide).outer, 8.0 / 64, 1e-15);
 }
 
+// The paper's scene with every length times 1e-80: w scales with the lengths and the force with
+// their inverse, so scaled back it is the paper's answer. Unscaled, (D31)'s blocks (of order h^4
+// beside K's h^-2) underflowed there and the factorisation failed.
+TEST(KinkEnrichment, SolvesAPlateStatedInTinyUnits) {
+  const double L = 1e-80, R = paper_scene().cylinder->height;
+  SamplingSpec spec{SamplingKind::Edge};
+  spec.enrich.kind = EnrichSpec::Kind::Ring;
+  const SceneSolution unit = solve_exact_scene(paper_scene(), 32, spec, ExactOptions{});
+  const SceneSolution tiny = solve_exact_scene(Scene::rectangle(L, L).over(Cylinder{0.5 * L, 0.5 * L, 0.25 * L, R * L}), 32, spec, ExactOptions{});
+  ASSERT_TRUE(tiny.result.converged) << tiny.result.message;
+  ASSERT_TRUE(tiny.solved.kink.has_value());
+  const double w1 = extremum_of_w(unit.whole(), unit.result.w, +1).value, wL = extremum_of_w(tiny.whole(), tiny.result.w, +1).value;
+  const double f1 = total_contact_force(unit.whole(), unit.result.lambda), fL = total_contact_force(tiny.whole(), tiny.result.lambda);
+  EXPECT_NEAR(wL / L, w1, 1e-12 * w1);
+  EXPECT_NEAR(fL * L, f1, 1e-11 * f1);
+}
+
 // The smallest disk (D31) fits, two cells in radius on n = 64: still carried, certified, and
 // converging at order four in max w and the force against the series (kink_study measures 4.5 and
 // 4.3 from n = 64 to 128).
