@@ -226,8 +226,9 @@ SpMat kink_interpolant(const Grid& g, const KinkEnrichment& e) {
 namespace {
 // One cell's quadrature points, gathered first, and the functions met in it with the interpolant's
 // coefficients on the cell (Pl) that each subtracts. The blocks are then formed by matrix products
-// over all the cell's points at once: point by point, as outer products, the assembly took a third
-// longer (n = 64: 0.040 s against 0.031 s).
+// over all the cell's points at once: point by point, as outer products, the whole problem's
+// assembly took a third longer when this was measured (n = 64: 0.040 s against 0.031 s; the blocks
+// alone have since become faster, as the figures below say).
 struct CellBlocks {
   std::vector<int> met;
   Eigen::MatrixXd Pl;
@@ -284,7 +285,7 @@ static void add_profile(const Radial& g, const Spline3& S, double ir, double& v,
 // alone; where chi is flat (1, out to kKinkFlatCells cells) it is Lap D, and psi is D, so the slope
 // is carried only across the cut-off. The basis rows hold every point's Laplacians first (Lap phi_i,
 // read in place by the border), then its values, then the cut-off's slopes. Five Cartesian rows a
-// point made the blocks a fifth slower (n = 64: 7.3 ms against 6.0 ms), most of it in the product
+// point made the blocks alone a fifth slower (n = 64: 7.3 ms against 6.0 ms), most of it in the product
 // with the interpolant; three at every point, 5% slower than this.
 static void cell_blocks(const Grid& g, const KinkEnrichment& e, const Field& f, double x0, double y0, CellBlocks& cb,
                         Eigen::MatrixXd& Bl, Eigen::MatrixXd& El, VectorXd& fl) {
