@@ -11,10 +11,11 @@
 namespace plate {
 
 namespace {
-// The highest the obstacle asks the plate to reach. Any answer that keeps above it is at least that
-// large somewhere, so feasible answers keep the scale max |w|; an answer that lies below a positive
-// obstacle everywhere (w = 0 under R = 1e-320, where the solve underflowed) is measured against the
-// obstacle instead, and fails.
+// The highest the obstacle asks the plate to reach. Any answer that keeps above it is about that
+// large somewhere (exactly, on nodal rows; a row between nodes can read a little more than the
+// nodal maximum), so feasible answers keep a scale close to max |w|; an answer that lies below a
+// positive obstacle everywhere (w = 0 under R = 1e-320, where the solve underflowed) is measured
+// against the obstacle instead, and fails.
 double obstacle_top(const VectorXd& phi) {
   double top = 0;
   for (double v : phi)
@@ -76,7 +77,8 @@ Certificate certify(const Problem& p, const VectorXd& w, const VectorXd& lambda)
     const double normwise = row_max[i] * w_inf;
     double s = scale[i];
     if (s <= 1000 * row_terms[i] * DBL_EPSILON * normwise) s += normwise;
-    if (s > 0 || std::isnan(s)) raise(c.stationarity, std::abs(r[i]) / s);
+    // A scale that overflowed cannot tell a residual from round-off: the entry is then NaN, and fails.
+    if (s > 0 || std::isnan(s)) raise(c.stationarity, std::isinf(s) ? NAN : std::abs(r[i]) / s);
   }
   return c;
 }
@@ -84,7 +86,8 @@ Certificate certify(const Problem& p, const VectorXd& w, const VectorXd& lambda)
 
 std::string certificate_failure(const Certificate& c, double tol) {
   std::ostringstream m;
-  m << "the active set settled but the certificate fails: worst relative residual " << c.worst() << " > tol = " << tol
+  m << "the active set settled but the certificate fails: worst relative residual " << c.worst()
+    << (std::isnan(c.worst()) ? " (not a number: an entry overflowed or the answer holds a NaN), tol = " : " > tol = ") << tol
     << " (violation " << c.violation << ", negative multiplier " << c.negative_multiplier << ", complementarity "
     << c.complementarity << ", stationarity " << c.stationarity << ")";
   return m.str();

@@ -39,10 +39,11 @@ struct Radial {
 // Divided by unit^3 (KinkEnrichment::unit, the cell): psi_k is then of the size of a nodal basis
 // function and its blocks of the size of K's. Unscaled they went like h^4 against K's h^-2, and for
 // a plate of side 1e-80 they underflowed (CHOLMOD found the system not positive definite).
+// In t = d / unit, so that no power of the cell is formed alone (1 / h^3 overflows below h = 1e-103).
 Radial kink_radial(double d, double a, double unit) {
   if (!(d > 0)) return {};
-  const double s = 1 / (unit * unit * unit);
-  return {s * (d * d * d * (1 - d / (2 * a))), s * (3 * d * d - 2 * d * d * d / a), s * (6 * d - 6 * d * d / a)};
+  const double t = d / unit;
+  return {t * t * t * (1 - d / (2 * a)), 3 * t * t / unit - 2 * t * t * t / a, 6 * t / (unit * unit) - 6 * t * t / (a * unit)};
 }
 
 // chi(d) and its first two derivatives: the quintic smoothstep, C^2, from 1 at inner to 0 at outer.
@@ -126,10 +127,17 @@ void circle_crossings(double cx, double cy, double rho, double x0, double x1, do
 
 }  // namespace
 
+// Not finite, or not ordered: refused before any comparison that a NaN would pass.
+static void require_valid(const KinkBand& band) {
+  if (!(band.flat > std::sqrt(2.0) && band.zero > band.flat && std::isfinite(band.zero)))
+    throw std::invalid_argument("the cut-off's band of (D31) must have sqrt(2) < flat < zero cells, both finite");
+}
+
 std::string kink_misfit(const Grid& g, const EdgeCurve& c, const KinkBand& band) {
+  require_valid(band);
   if (c.kind != EdgeCurve::Kind::Circle) return "the edge is not a circle";
   const double clearance = std::min({c.cx - c.r, g.whole_lx() - c.cx - c.r, c.cy - c.r, g.whole_ly() - c.cy - c.r});
-  // The cells where chi is not 0 reach 2.5 + sqrt(2) cells past the rim; their nodes must all carry
+  // The cells where chi is not 0 reach band.zero + sqrt(2) cells past the rim; their nodes must all carry
   // unknowns. A disk two cells across its radius keeps its centre out of every cell the rim cuts.
   if (c.r >= kKinkMinRadiusCells * g.h && clearance >= (band.zero + 1.5) * g.h) return "";
   std::ostringstream m;
@@ -152,9 +160,7 @@ double kink_knot_cells(double r, double h) {
 // @end kink-knots
 
 KinkEnrichment make_kink_enrichment(const Grid& g, const EdgeCurve& circle, int knots, const KinkBand& band) {
-  // Not finite, or not ordered: refused before any comparison that a NaN would pass.
-  if (!(band.flat > std::sqrt(2.0) && band.zero > band.flat && std::isfinite(band.zero)))
-    throw std::invalid_argument("make_kink_enrichment: the cut-off's band must have sqrt(2) < flat < zero cells, both finite");
+  require_valid(band);
   if (circle.kind != EdgeCurve::Kind::Circle) throw std::invalid_argument("--enrich ring needs a circle (a cylinder or --edge circle:)");
   if (knots < 8 || knots % 4) throw std::invalid_argument("make_kink_enrichment: the knots must be a multiple of 4, at least 8");
   if (const std::string why = kink_misfit(g, circle, band); !why.empty()) throw std::invalid_argument("--enrich ring: " + why);

@@ -4,8 +4,8 @@
 // space is widened by
 //   psi_k = chi (F_k - I_h F_k),   F_k(r, theta) = (r - a)_+^3 (1 - (r - a) / (2a)) B_k(theta) / h^3,
 // B_k the periodic cubic B-splines of the angle, I_h the grid's Hermite interpolant (nodal values,
-// slopes and twist), chi(d) a cut-off of the distance d = r - a: 1 up to 1.5 cells outside the rim,
-// 0 from 2.5 cells on. F_k is C^2 with its third radial derivative jumping by 6 B_k / h^3 at the rim, so
+// slopes and twist), chi(d) a cut-off of the distance d = r - a: by default 1 up to 1.5 cells outside
+// the rim, 0 from 2.5 cells on (KinkBand). F_k is C^2 with its third radial derivative jumping by 6 B_k / h^3 at the rim, so
 // psi_k is in H^2 (the space stays conforming) and carries the jump; its fourth jumps by -2/a times
 // that, as the plate's equation on either side of a circle demands (D32). Subtracting I_h F_k makes
 // psi_k vanish with its slopes and twist at every node: the grid's unknowns stay the nodal values of
@@ -37,7 +37,8 @@ struct KinkBand {
   double flat = kKinkFlatCells, zero = kKinkZeroCells;
 };
 // (D31) fits a grid whose circle is at least this many cells in radius (so no square the rim cuts
-// holds its centre) and kKinkZeroCells + 1.5 cells from every clamped edge.
+// holds its centre) and the band's zero + 1.5 cells (kKinkZeroCells + 1.5 by default) from every
+// clamped edge.
 constexpr double kKinkMinRadiusCells = 2;
 // The edge rows' knot spacing where (D31) is on (problem.cpp's rows_on): kKinkKnotCells cells, or
 // closer where that leaves fewer than kKinkKnotsAtLeast knots round the circle, but never closer

@@ -311,15 +311,14 @@ std::string underflow_risk(const Problem& p) {
     if (std::isfinite(v)) phi = std::max(phi, std::abs(v));
   const double h2 = std::min(1.0, p.grid.h * p.grid.h), load = p.F.size() ? p.F.cwiseAbs().maxCoeff() : 0.0;
   std::ostringstream m;
-  if (load > 0 && load < DBL_MIN / DBL_EPSILON) {
-    m << "--load: the load vector reaches only " << load << ", within 16 digits of double precision's underflow ("
-      << DBL_MIN << "); state the problem in other units";
+  if (load > 0 && load < DBL_MIN) {
+    m << "--load: the load vector reaches only " << load << ", below double precision's normal range (" << DBL_MIN
+      << "); state the problem in other units";
     return m.str();
   }
-  if (phi == 0 || phi * h2 >= DBL_MIN / DBL_EPSILON) return "";
-  m << "--obstacle-height (or --obstacle): the obstacle reaches only |phi| = " << phi
-    << ", where w and its terms come within 16 digits of double precision's underflow (" << DBL_MIN
-    << "); state the problem in other units";
+  if (phi == 0 || phi * h2 >= DBL_MIN) return "";
+  m << "--obstacle-height (or --obstacle): the obstacle reaches only |phi| = " << phi << ", where w's smallest terms (about |phi| h^2, h = "
+    << p.grid.h << ") fall below double precision's normal range (" << DBL_MIN << "); state the problem in other units";
   return m.str();
 }
 

@@ -62,11 +62,10 @@ Problem make_problem(const Scene& s, const Grid& g, const SamplingSpec& spec);
 // whatever the failure was: above about 1e301 / n^2 nothing else is worth suspecting. (The load is
 // not bounded here: a converged answer with an output that is not finite is refused on its own.)
 std::string overflow_risk(const Problem& p);
-// Why p's solve may have failed by underflow, or "": an obstacle whose largest |phi| is so small that
-// w and its terms (the twists carry factors of h^2) fall below double precision's normal range,
-// 2.2e-308, where digits are lost (the cylinder with R = 1e-320 at n = 64 solved to w = 0; the
-// certificate now refuses that), or a load vector as small. Pessimistic like overflow_risk, and asked
-// only after a failure.
+// Why p's solve may have failed by underflow, or "": an obstacle so low that w's smallest terms
+// (a twist times h^2, about |phi| h^2) fall below double precision's normal range, 2.2e-308, where
+// digits are lost (the cylinder with R = 1e-320 at n = 64 solved to w = 0, which the certificate now
+// refuses), or a load vector that small. Asked only after a failed solve, like overflow_risk.
 std::string underflow_risk(const Problem& p);
 // The grid, its sampling and the obstacle at the samples, without K, M and F: what the reports of
 // a solve on part of the plate read on the whole (mirror.hpp). Validates as make_problem does.

@@ -186,7 +186,10 @@ TEST(KinkEnrichment, RefusesWhereItDoesNotFit) {
 // it must reach 0 beyond that, and a wider band needs more room to the clamped edge.
 TEST(KinkEnrichment, RefusesABandThatBreaksItsRules) {
   for (const KinkBand& b : {KinkBand{1.4, 2.5}, KinkBand{1.5, 1.5}, KinkBand{NAN, 2.5}, KinkBand{1.5, INFINITY}})
+  {
     EXPECT_THROW(make_kink_enrichment(make_grid(32), kRim, 32, b), std::invalid_argument) << b.flat << " to " << b.zero;
+    EXPECT_THROW(kink_fits(make_grid(32), kRim, b), std::invalid_argument) << b.flat << " to " << b.zero;  // not a quiet misfit
+  }
   const KinkBand wide{4, 8};  // 9.5 cells to the edge: the paper's disk is 8 cells from it on n = 32, 16 on n = 64
   EXPECT_TRUE(kink_fits(make_grid(32), kRim));
   EXPECT_FALSE(kink_fits(make_grid(32), kRim, wide));

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -586,9 +587,6 @@ plate::SolveResult solve_penalty(Run& r, const plate::Problem& problem, plate::V
       progress.step("eps = " + fmt("%g", eps / L4) + ": iteration " + std::to_string(iteration) + ", step " +
                     fmt("%.2e", step));
     };
-  // The penalty's tolerance is tol times the answer's size, which underflows to 0 for a problem
-  // this small: named here, before the scheme refuses a tol the user did not give.
-  if (const std::string why = underflow_risk(problem); !why.empty()) throw std::invalid_argument(why);
   SolveResult result = solve(problem, r.opt);
   xi = contact_force_density(problem, result.w, result.eps);
   return result;
@@ -622,6 +620,13 @@ Config scale(Run& r, plate::Progress& progress, plate::Clock::time_point t0) {
   r.penalised = make_problem(r.scene, r.g, r.spec);
   r.report.seconds_assemble = seconds_since(t0);
   r.opt.tol *= answer_scale(*r.penalised);
+  // The penalty schemes stop on steps within tol times the answer's size; where that product leaves
+  // double precision's normal range (the cylinder at R = 1e-320), they would refuse a tol the user
+  // never gave, so the scene is named instead.
+  if (!(r.opt.tol >= DBL_MIN))
+    throw std::invalid_argument("--obstacle-height, --obstacle or --load: the answer's size (" + fmt("%g", answer_scale(*r.penalised)) +
+                                ") times --tol is " + fmt("%g", r.opt.tol) + ", below double precision's normal range (" +
+                                fmt("%g", DBL_MIN) + "); state the problem in other units");
   return {{"tol (absolute: --tol times the answer's size)", fmt("%.6g", r.opt.tol)}, {"eps unit (lx^4)", fmt("%.6g", L4)}};
 }
 
