@@ -362,9 +362,14 @@ TEST(Cli, AnswerScalesWithUnitsAndHeightForEveryScheme) {
     const Answer unit = answer_of(base);
     const Answer mm = answer_of(base + " --lx 1000 --ly 1000 --radius 250 --centre 500,500 -R 62.5");
     const Answer low = answer_of(base + " -R 1e-5");
+    // Far down the normal range, where a floor of 1e-300 in a scale, or a tolerance that underflows,
+    // would refuse or pass what it should not.
+    const Answer tiny = answer_of(base + " -R 1e-300");
     SCOPED_TRACE(scheme);
     EXPECT_EQ(mm.status, unit.status);
     EXPECT_EQ(low.status, unit.status);
+    EXPECT_EQ(tiny.status, unit.status);
+    EXPECT_NEAR(tiny.max_w / unit.max_w / (1e-300 / 0.0625), 1.0, 1e-9);
     // A penalty force is eps^-1 (phi - S w): the rounding of phi, amplified by phi / (phi - S w), about
     // 1e8 at eps = 1e-12, gives it a relative floor near 1e-8. The exact solver has no such loss: 1e-9
     // leaves room for the round-off of two solves at different scales.
