@@ -353,6 +353,22 @@ Answer answer_of(const std::string& args) {
 }
 }  // namespace
 
+// The series stated in other units: in micrometres its changes in double once stopped shrinking at
+// round-off, and it refused a right answer as "not settled" (exit 3); at 1e20 too.
+TEST(Cli, SemiAnalyticSchemeAnswersInOtherUnits) {
+  const Answer unit = answer_of("--scheme semi-analytic");
+  ASSERT_EQ(unit.status, 0);
+  for (const double L : {1e-6, 1e-3, 1e20}) {
+    char args[256];
+    std::snprintf(args, sizeof args, "--scheme semi-analytic --lx %.17g --ly %.17g --radius %.17g --centre %.17g,%.17g -R %.17g", L, L,
+                  0.25 * L, 0.5 * L, 0.5 * L, 0.0625 * L);
+    const Answer a = answer_of(args);
+    EXPECT_EQ(a.status, 0) << args;
+    EXPECT_NEAR(a.max_w / L, unit.max_w, 1e-12 * unit.max_w) << args;
+    EXPECT_NEAR(a.force * L, unit.force, 1e-10 * unit.force) << args;
+  }
+}
+
 // The same problem stated in millimetres, or with a 6250 times lower obstacle, must give the
 // answer scaled exactly: w by the length (or the height), the total force by length^-2 (or the
 // height). Tolerances and eps that were absolute would stop somewhere else.
