@@ -143,7 +143,8 @@ struct RimAnswer {
   double bar_max_w = 0, bar_force = 0, bar_q0 = 0, bar_q45 = 0;
   bool settled = false;
 };
-// `first`: the coarsest level solved (at least three levels are kept, for a bar that shrank).
+// `first`: the coarsest level solved (at least three levels are kept, for a bar that shrank). An
+// answer in double whose premise holds but that has not settled is solved again in long double.
 RimAnswer rim_answer(const Scene& s, int levels = 6, bool extended = false, int first = 0);
 
 // The series' line load as a report of the grid schemes states one (line_force.hpp): its values at

@@ -221,8 +221,8 @@ TEST(KinkEnrichment, ConvergesOnTheSmallestDiskItFits) {
   const Scene s = Scene::rectangle(1, 1).over(Cylinder{0.5, 0.5, 1.0 / 32, 0.0625});
   const RimAnswer series = rim_answer(s);
   ASSERT_TRUE(series.premise.holds);
+  ASSERT_TRUE(series.settled);  // in long double: in double its last changes stall at round-off
   const double w = series.finest.max_w().w, f = series.finest.total_force();
-  ASSERT_LT(series.bar_max_w, 1e-12 * w);
   SamplingSpec spec{SamplingKind::Edge};
   spec.enrich.kind = EnrichSpec::Kind::Ring;
   std::vector<double> ew, ef;

@@ -735,11 +735,7 @@ Outputs solve_grid(const Options& o, Run& r, plate::SceneSolution& scene, plate:
 Outputs solve_series(const Options& o, Run& r, std::optional<plate::RimAnswer>& answer, plate::Clock::time_point t0) {
   using namespace plate;
   // The last three truncations: enough for a bar that has been seen to shrink (rim_series shows all six).
-  answer = rim_answer(r.scene, 6, false, 3);
-  // Once its changes reach the double fit's round-off they scatter and need not shrink: the paper's
-  // scene in micrometres (lx = 1e-6) did not settle, with max w right to 14 digits. The fit in long
-  // double (RimSeriesOptions::extended; 0.03 s against 0.02 s here) takes that round-off away.
-  if (answer->premise.holds && !answer->settled) answer = rim_answer(r.scene, 6, true, 3);
+  answer = rim_answer(r.scene, 6, false, 3);  // in long double where double's round-off stalls it
   const RimSeries& s = answer->finest;
   Report& report = r.report;
   report.series = &*answer;
