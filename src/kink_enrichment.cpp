@@ -160,7 +160,6 @@ double kink_knot_cells(double r, double h) {
 // @end kink-knots
 
 KinkEnrichment make_kink_enrichment(const Grid& g, const EdgeCurve& circle, int knots, const KinkBand& band) {
-  require_valid(band);
   if (circle.kind != EdgeCurve::Kind::Circle) throw std::invalid_argument("--enrich ring needs a circle (a cylinder or --edge circle:)");
   if (knots < 8 || knots % 4) throw std::invalid_argument("make_kink_enrichment: the knots must be a multiple of 4, at least 8");
   if (const std::string why = kink_misfit(g, circle, band); !why.empty()) throw std::invalid_argument("--enrich ring: " + why);

@@ -291,10 +291,16 @@ void attach_ends(Problem& p, const std::vector<ContactEnd>& ends, const std::vec
   if (p.M.size()) p.M = sampling_mass(p);
 }
 
-std::string overflow_risk(const Problem& p) {
+// The largest |phi| at the samples that carry a constraint: the obstacle's size for both risks.
+static double obstacle_size(const Problem& p) {
   double phi = 0;
   for (double v : p.phi)
     if (std::isfinite(v)) phi = std::max(phi, std::abs(v));
+  return phi;
+}
+
+std::string overflow_risk(const Problem& p) {
+  const double phi = obstacle_size(p);
   double k = 0;
   for (Eigen::Index c = 0; c < p.K.outerSize(); ++c)
     for (SpMat::InnerIterator it(p.K, c); it; ++it) k = std::max(k, std::abs(it.value()));
@@ -306,9 +312,7 @@ std::string overflow_risk(const Problem& p) {
 }
 
 std::string underflow_risk(const Problem& p) {
-  double phi = 0;
-  for (double v : p.phi)
-    if (std::isfinite(v)) phi = std::max(phi, std::abs(v));
+  const double phi = obstacle_size(p);
   const double h2 = std::min(1.0, p.grid.h * p.grid.h), load = p.F.size() ? p.F.cwiseAbs().maxCoeff() : 0.0;
   std::ostringstream m;
   if (load > 0 && load < DBL_MIN) {

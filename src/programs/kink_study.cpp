@@ -80,6 +80,20 @@ double condition_number(const SpMat& unscaled) {
   return top * bottom;
 }
 
+// max w (the field's peak) and the total force of a solve, and their relative distances from the
+// series where one is given: what both sections of the study measure.
+struct Measured {
+  double max_w = 0, force = 0, err_w = NAN, err_f = NAN;
+};
+Measured measure(const SceneSolution& x, const RimSeries* s) {
+  Measured m;
+  const Problem& p = x.whole();
+  m.max_w = extremum_of_w(p, x.result.w, +1).value;
+  m.force = total_contact_force(p, x.result.lambda);
+  if (s) m.err_w = std::abs(m.max_w - s->max_w().w) / s->max_w().w, m.err_f = std::abs(m.force - s->total_force()) / s->total_force();
+  return m;
+}
+
 Row solve_one(const SceneCase& c, const RimAnswer& series, bool kink, int n) {
   SamplingSpec spec{SamplingKind::Edge};
   if (kink) spec.enrich.kind = EnrichSpec::Kind::Ring;
@@ -90,13 +104,10 @@ Row solve_one(const SceneCase& c, const RimAnswer& series, bool kink, int n) {
   // The space actually solved: (D31) is left out of a grid it does not fit.
   r.scene = c.key, r.space = x.solved.kink ? "kink" : "plain", r.n = n, r.h = c.scene.lx / n, r.unknowns = x.solved.unknowns();
   r.certified = x.result.converged;
-  const Problem& p = x.whole();
-  r.max_w = extremum_of_w(p, x.result.w, +1).value;
-  r.force = total_contact_force(p, x.result.lambda);
   const RimSeries& s = series.finest;
-  r.err_w = std::abs(r.max_w - s.max_w().w) / s.max_w().w;
-  r.err_f = std::abs(r.force - s.total_force()) / s.total_force();
-  r.err_line = max_distance(line_force(p, x.result.lambda), [&](double t) { return s.q(t); }) / s.q_cos.at(0);
+  const Measured m = measure(x, &s);
+  r.max_w = m.max_w, r.force = m.force, r.err_w = m.err_w, r.err_f = m.err_f;
+  r.err_line = max_distance(line_force(x.whole(), x.result.lambda), [&](double t) { return s.q(t); }) / s.q_cos.at(0);
   if (n <= kCondCells * c.coarsest / 16) r.cond = condition_number(x.solved.K);
   if (!r.certified) std::cerr << "kink_study: " << c.key << " " << r.space << " n = " << n << ": " << x.result.message << "\n";
   return r;
@@ -214,13 +225,8 @@ StabilityRow solve_stability(const std::string& study, const std::string& key, c
   r.study = study, r.scene = key, r.n = n, r.band = band;
   r.space = x.solved.kink ? "kink" : "plain";
   r.certified = x.result.converged;
-  const Problem& p = x.whole();
-  r.max_w = extremum_of_w(p, x.result.w, +1).value;
-  r.force = total_contact_force(p, x.result.lambda);
-  if (series) {
-    r.err_w = std::abs(r.max_w - series->finest.max_w().w) / series->finest.max_w().w;
-    r.err_f = std::abs(r.force - series->finest.total_force()) / series->finest.total_force();
-  }
+  const Measured m = measure(x, series ? &series->finest : nullptr);
+  r.max_w = m.max_w, r.force = m.force, r.err_w = m.err_w, r.err_f = m.err_f;
   if (n <= kCondCells) r.cond = condition_number(x.solved.K);
   if (!r.certified) std::cerr << "kink_study: " << study << " " << key << " n = " << n << ": " << x.result.message << "\n";
   return r;

@@ -619,12 +619,13 @@ Config scale(Run& r, plate::Progress& progress, plate::Clock::time_point t0) {
   progress.stage("assembling " + std::to_string(r.g.unknowns()) + " unknowns");
   r.penalised = make_problem(r.scene, r.g, r.spec);
   r.report.seconds_assemble = seconds_since(t0);
-  r.opt.tol *= answer_scale(*r.penalised);
+  const double size = answer_scale(*r.penalised);  // a factorisation under a load: asked once
+  r.opt.tol *= size;
   // The penalty schemes stop on steps within tol times the answer's size; where that product leaves
   // double precision's normal range (the cylinder at R = 1e-320), they would refuse a tol the user
   // never gave, so the scene is named instead.
   if (!(r.opt.tol >= DBL_MIN))
-    throw std::invalid_argument("--obstacle-height, --obstacle or --load: the answer's size (" + fmt("%g", answer_scale(*r.penalised)) +
+    throw std::invalid_argument("--obstacle-height, --obstacle or --load: the answer's size (" + fmt("%g", size) +
                                 ") times --tol is " + fmt("%g", r.opt.tol) + ", below double precision's normal range (" +
                                 fmt("%g", DBL_MIN) + "); state the problem in other units");
   return {{"tol (absolute: --tol times the answer's size)", fmt("%.6g", r.opt.tol)}, {"eps unit (lx^4)", fmt("%.6g", L4)}};
