@@ -9,33 +9,20 @@
 
 #include "bfs_element.hpp"
 #include "gauss.hpp"
+#include "side_kinks.hpp"
 
 namespace plate {
 
 namespace {
 
-// The centred cubic B-spline of the knot spacing x and its first two derivatives.
-struct Spline3 {
-  double v = 0, d1 = 0, d2 = 0;
-};
-Spline3 cubic_bspline(double x) {
-  const double a = std::abs(x), sg = x < 0 ? -1.0 : 1.0;
-  if (a >= 2) return {};
-  if (a >= 1) {
-    const double t = 2 - a;
-    return {t * t * t / 6, -sg * t * t / 2, t};
-  }
-  return {2.0 / 3 - a * a + a * a * a / 2, -2 * x + 1.5 * x * a, -2 + 3 * a};
-}
+using Spline3 = KinkSpline;
+using Radial = KinkRadial;
 
 // @region kink-functions
 // Eq. (D31): the radial profile g(d) = d_+^3 (1 - d / (2a)), d = r - a, and its first two
 // derivatives. The cube alone gives the third radial derivative its jump at the rim; on a circle
 // the plate's equation on both sides then forces the fourth to jump by -2/a times the third (D32),
 // which the second term carries, so the grid is left only the jumps from the fifth derivative on.
-struct Radial {
-  double g = 0, g1 = 0, g2 = 0;
-};
 // Divided by unit^3 (KinkEnrichment::unit, the cell): psi_k is then of the size of a nodal basis
 // function and its blocks of the size of K's. Unscaled they went like h^4 against K's h^-2, and for
 // a plate of side 1e-80 they underflowed (CHOLMOD found the system not positive definite).
@@ -45,15 +32,9 @@ Radial kink_radial(double d, double a, double unit) {
   const double t = d / unit;
   return {t * t * t * (1 - d / (2 * a)), 3 * t * t / unit - 2 * t * t * t / a, 6 * t / (unit * unit) - 6 * t * t / (a * unit)};
 }
-
-// chi(d) and its first two derivatives: the quintic smoothstep, C^2, from 1 at inner to 0 at outer.
-Radial cutoff(const KinkEnrichment& e, double d) {
-  if (d <= e.inner) return {1, 0, 0};
-  if (d >= e.outer) return {};
-  const double L = e.outer - e.inner, u = (d - e.inner) / L, u2 = u * u;
-  return {1 - u2 * u * (10 - 15 * u + 6 * u2), -30 * u2 * (1 - 2 * u + u2) / L, -60 * u * (1 - 3 * u + 2 * u2) / (L * L)};
-}
 // @end kink-functions
+
+Radial cutoff(const KinkEnrichment& e, double d) { return kink_cutoff(e, d); }
 
 // The (at most four) splines that do not vanish at angle theta: their indices and values.
 struct SplinesAt {
@@ -127,15 +108,12 @@ void circle_crossings(double cx, double cy, double rho, double x0, double x1, do
 
 }  // namespace
 
-// Not finite, or not ordered: refused before any comparison that a NaN would pass.
-static void require_valid(const KinkBand& band) {
-  if (!(band.flat > std::sqrt(2.0) && band.zero > band.flat && std::isfinite(band.zero)))
-    throw std::invalid_argument("the cut-off's band of (D31) must have sqrt(2) < flat < zero cells, both finite");
-}
+static void require_valid(const KinkBand& band) { check_kink_band(band); }
 
 std::string kink_misfit(const Grid& g, const EdgeCurve& c, const KinkBand& band) {
   require_valid(band);
-  if (c.kind != EdgeCurve::Kind::Circle) return "the edge is not a circle";
+  if (c.kind == EdgeCurve::Kind::Polygon) return side_kink_misfit(g, c, band);
+  if (c.kind != EdgeCurve::Kind::Circle) return "the edge is neither a circle nor a polygon";
   const double clearance = std::min({c.cx - c.r, g.whole_lx() - c.cx - c.r, c.cy - c.r, g.whole_ly() - c.cy - c.r});
   // The cells where chi is not 0 reach band.zero + sqrt(2) cells past the rim; their nodes must all carry
   // unknowns. A disk two cells across its radius keeps its centre out of every cell the rim cuts.
@@ -186,6 +164,7 @@ KinkEnrichment make_kink_enrichment(const Grid& g, const EdgeCurve& circle, int 
 }
 
 KinkValue kink_profile(const KinkEnrichment& e, int k, double x, double y) {
+  if (e.polygon()) return side_kink_profile(e, k, x, y);
   KinkValue v;
   const double dx = x - e.cx, dy = y - e.cy, r = std::hypot(dx, dy);
   if (!(r > e.a)) return v;  // F_k is 0 on and inside the rim
@@ -198,6 +177,7 @@ KinkValue kink_profile(const KinkEnrichment& e, int k, double x, double y) {
 }
 
 SpMat kink_interpolant(const Grid& g, const KinkEnrichment& e) {
+  if (e.polygon()) return side_kink_interpolant(g, e);
   std::vector<Eigen::Triplet<double>> t;
   const double reach = e.a + e.outer + 1.5 * g.h;
   for (int j = 0; j <= g.ny; ++j)
@@ -345,6 +325,7 @@ static void cell_blocks(const Grid& g, const KinkEnrichment& e, const Field& f, 
 // smooth function of the angle, split again at the rim and the cut-off's ends, and the integrand is
 // smooth on each part, so Gauss rules in both converge fast.
 KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const SpMat& interpolant, const Field& f) {
+  if (e.polygon()) return assemble_side_kink_blocks(g, e, interpolant, f);
   const int N = g.unknowns();
   const double h = g.h, spacing = 2 * M_PI / e.knots, radii[3] = {e.a, e.a + e.inner, e.a + e.outer};
   // The rule on each part of a ray (kKinkRule). Inside the rim psi_k is the bicubic -I_h F_k, so
@@ -442,6 +423,7 @@ KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const Sp
 // @end kink-blocks
 
 bool kink_near(const KinkEnrichment& e, double x, double y) {
+  if (e.polygon()) return side_kink_near(e, x, y);
   // Deeper inside than any square the rim cuts (within sqrt(2) < kKinkFlatCells cells of it), and
   // beyond the cut-off, psi_k is zero. Every field read asks this, so the squared distance is
   // compared with the band's squared radii: std::hypot took 2% of `plate -n 64`. Past 1e150 the
@@ -456,6 +438,7 @@ bool kink_near(const KinkEnrichment& e, double x, double y) {
 }
 
 KinkValue kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y) {
+  if (e.polygon()) return side_kink_field(e, c, interpolant, x, y);
   KinkValue out;
   if (!kink_near(e, x, y)) return out;
   const double dx = x - e.cx, dy = y - e.cy, r = std::hypot(dx, dy);
@@ -484,6 +467,7 @@ KinkValue kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue
 }
 
 double kink_value(const KinkEnrichment& e, const VectorXd& c, double interpolant, double x, double y) {
+  if (e.polygon()) return side_kink_value(e, c, interpolant, x, y);
   if (!kink_near(e, x, y)) return 0;
   const double dx = x - e.cx, dy = y - e.cy, r = std::hypot(dx, dy);
   double D = -interpolant;

@@ -22,28 +22,15 @@
 #include "assemble.hpp"
 #include "edge.hpp"
 #include "grid.hpp"
-#include "polar.hpp"
+#include "kink_space.hpp"
 #include "sparse.hpp"
 
 namespace plate {
 
-// The cut-off chi of (D31): 1 up to kKinkFlatCells cells outside the rim (every square the rim
-// cuts lies within sqrt(2) cells of it), 0 from kKinkZeroCells cells on.
-constexpr double kKinkFlatCells = 1.5, kKinkZeroCells = 2.5;
-// The band of chi in cells, the defaults above unless a study widens it (kink_study's stability
-// section): flat must exceed sqrt(2), so that every square the rim cuts lies where chi = 1, and
-// zero must exceed flat.
-struct KinkBand {
-  double flat = kKinkFlatCells, zero = kKinkZeroCells;
-};
-// (D31) fits a grid whose circle is at least this many cells in radius (so no square the rim cuts
-// holds its centre) and the band's zero + 1.5 cells (kKinkZeroCells + 1.5 by default) from every
-// clamped edge.
-constexpr double kKinkMinRadiusCells = 2;
 // The edge rows' knot spacing where (D31) is on (problem.cpp's rows_on): kKinkKnotCells cells, or
 // closer where that leaves fewer than kKinkKnotsAtLeast knots round the circle, but never closer
 // than kKinkKnotCellsMin cells.
-constexpr double kKinkKnotCells = 4, kKinkKnotCellsMin = 2;
+constexpr double kKinkKnotCellsMin = 2;
 constexpr int kKinkKnotsAtLeast = 32;
 // Gauss points of the polar rule of the blocks on each part of a ray: inside the rim, from the rim
 // to the cut-off's start, and across the cut-off (kink_enrichment.cpp says why these counts).
@@ -52,25 +39,16 @@ struct KinkRulePoints {
 };
 constexpr KinkRulePoints kKinkRule[3] = {{6, 5}, {6, 6}, {8, 8}};
 
-// How the space is widened: not at all, or with (D31) on the scene's circle.
+// How the space is widened: not at all, with (D31) on the scene's circle, or with (D33) across the
+// sides of its convex polygon.
 struct EnrichSpec {
-  enum class Kind { None, Ring };
+  enum class Kind { None, Ring, Sides };
   Kind kind = Kind::None;
   KinkBand band;
-  bool on() const { return kind == Kind::Ring; }
+  bool on() const { return kind != Kind::None; }
 };
 
-struct KinkEnrichment {
-  double cx = 0, cy = 0, a = 0;
-  double inner = 0, outer = 0;          // chi = 1 for d <= inner, 0 for d >= outer
-  double unit = 1;                      // F_k is divided by unit^3 (the cell h^3: kink_enrichment.cpp)
-  int knots = 0;                        // M: periodic splines on the whole circle, centred at 2 pi j / M
-  std::vector<int> function_of_spline;  // spline j belongs to function function_of_spline[j]
-  int functions = 0;
-  int size() const { return functions; }
-};
-
-// Whether (D31) fits grid g: the circle at least two cells in radius, and every square where chi is
+// Whether (D31) (or (D33), for a polygon: side_kinks.hpp) fits grid g: the circle at least two cells in radius, and every square where chi is
 // not 0 clear of the clamped edges (band.zero + 1.5 cells from the rim). A coarser grid of a
 // sequence that fails this is solved in the plain space.
 bool kink_fits(const Grid& g, const EdgeCurve& circle, const KinkBand& band = {});
@@ -85,7 +63,6 @@ std::string kink_misfit(const Grid& g, const EdgeCurve& circle, const KinkBand& 
 KinkEnrichment make_kink_enrichment(const Grid& g, const EdgeCurve& circle, int knots, const KinkBand& band = {});
 
 // F_k of (D31) at (x, y): value and derivatives (before the interpolant is subtracted).
-using KinkValue = PlaneDerivatives;
 KinkValue kink_profile(const KinkEnrichment& e, int k, double x, double y);
 
 // The Hermite interpolant of each F_k: P(i, k) = unknown i of F_k at its node (N x functions).
@@ -95,10 +72,6 @@ SpMat kink_interpolant(const Grid& g, const KinkEnrichment& e);
 // rim, split wherever the integrand is not smooth: (Lap phi_i, Lap psi_k) in the rows of the grid's
 // unknowns with its transpose and (Lap psi_k, Lap psi_l) (a square matrix of all unknowns, zero in
 // the grid's block), and the load (f, psi_k).
-struct KinkBlocks {
-  SpMat border;
-  VectorXd load;
-};
 KinkBlocks assemble_kink_blocks(const Grid& g, const KinkEnrichment& e, const SpMat& interpolant, const Field& f);
 
 // Whether psi_k can be nonzero at (x, y): a square the rim cuts, or the band where chi is not 0.

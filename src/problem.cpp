@@ -1,6 +1,8 @@
 // Assembling a Problem and validating its data before any solve.
 #include "problem.hpp"
 
+#include "side_kinks.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cfloat>
@@ -179,7 +181,7 @@ bool kink_on(const Grid& g, const Scene& s, const SamplingSpec& spec) {
 // h^(3/7) r^(4/7) (D12), which balanced the rows against a plate that could not follow the kink.
 EdgeRows rows_on(const Grid& g, const Scene& s, const SamplingSpec& spec) {
   EdgeRows rows = spec.rows;
-  if (kink_on(g, s, spec) && rows.cells == 0) rows.cells = kink_knot_cells(s.edge.r, g.h);
+  if (kink_on(g, s, spec) && s.edge.kind == EdgeCurve::Kind::Circle && rows.cells == 0) rows.cells = kink_knot_cells(s.edge.r, g.h);
   return rows;
 }
 // @end kink-rows
@@ -240,6 +242,7 @@ OtherLaplacians kink_laplacians(const Problem& p) {
 }  // namespace
 
 OtherKinks kink_curves(const KinkEnrichment& e) {
+  if (e.polygon()) throw std::logic_error("kink_curves: the ends' functions are a circle's; the problem carries a polygon's (D33)");
   OtherKinks k{e.cx, e.cy, {e.a + e.inner, e.a + e.outer}, {}};
   for (int j = 0; j < e.knots; ++j) {
     const double t = std::fmod(2 * M_PI * j / e.knots, M_PI);
@@ -353,7 +356,10 @@ Problem make_problem(const Scene& s, const Grid& g, const SamplingSpec& spec) {
   p.F = assemble_load(g, s.load, "--load");
   // (D31) on every grid it fits; a coarser grid of a sequence that it does not fit is plain.
   if (kink_on(g, s, spec)) {
-    attach_kink(p, make_kink_enrichment(g, s.edge, spline_knots(s.edge.r, g.h, rows_on(g, s, spec)), spec.enrich.band));
+    if (s.edge.kind == EdgeCurve::Kind::Polygon)
+      attach_kink(p, make_side_kinks(g, s.edge, spec.enrich.band));
+    else
+      attach_kink(p, make_kink_enrichment(g, s.edge, spline_knots(s.edge.r, g.h, rows_on(g, s, spec)), spec.enrich.band));
     KinkBlocks blocks = assemble_kink_blocks(g, *p.kink, p.kink_interp, s.load);
     p.K = with_border(p.K, blocks.border);
     p.enrichment_block = std::move(blocks.border);

@@ -14,6 +14,7 @@
 #include "mirror.hpp"
 #include "published.hpp"
 #include "rim_contact.hpp"
+#include "side_kinks.hpp"
 
 using namespace plate;
 
@@ -39,9 +40,9 @@ VectorXd unit(int m, int k) {
 struct Brute {
   double b = 0, e = 0, load = 0;
 };
-Brute brute(const Grid& g, const KinkEnrichment& e, const SpMat& P, int k, int dof, int s) {
+Brute brute(const Grid& g, const KinkEnrichment& e, const SpMat& P, int k, int dof, int s, int points = 6) {
   const VectorXd c = unit(e.size(), k), Pc = P * c;
-  const Quadrature1D q = gauss_legendre(6);
+  const Quadrature1D q = gauss_legendre(points);
   Brute out;
   const double hs = g.h / s;
   for (int ey = 0; ey < g.ny; ++ey)
@@ -50,6 +51,12 @@ Brute brute(const Grid& g, const KinkEnrichment& e, const SpMat& P, int k, int d
       int local = -1;
       for (int i = 0; i < 16; ++i)
         if (dofs[i] == dof) local = i;
+      if (e.polygon() && local < 0 && !kink_near(e, (ex + 0.5) * g.h, (ey + 0.5) * g.h) && !kink_near(e, ex * g.h, ey * g.h)) {
+        bool any = false;  // a square none of whose points is near: psi_k is 0 on it
+        for (int i = 0; i <= 4 && !any; ++i)
+          for (int j = 0; j <= 4 && !any; ++j) any = kink_near(e, (ex + i / 4.0) * g.h, (ey + j / 4.0) * g.h);
+        if (!any) continue;
+      }
       for (int sy = 0; sy < s; ++sy)
         for (int sx = 0; sx < s; ++sx)
           for (size_t i = 0; i < q.points.size(); ++i)
@@ -327,4 +334,144 @@ TEST(KinkEnrichment, RowsReadTheEnrichedField) {
     points += k >= 0;
   }
   EXPECT_GT(points, 0);
+}
+
+// ---- (D33): the kink across a convex polygon's sides ----
+
+namespace {
+// A square whose sides, knots (4 cells apart) and cut-off lines (1.5 and 2.5 cells out) all lie on
+// the lines of half cells on n = 64, so that a tensor Gauss rule on half cells meets no break; not
+// on grid lines, where the plain space carries the kink and (D33) adds nothing.
+const EdgeCurve kAlignedSquare = parse_edge("polygon:0.3828125,0.3828125;0.6328125,0.3828125;0.6328125,0.6328125;0.3828125,0.6328125");
+// The hard cases' acute triangle, stated clockwise (the enrichment orders it itself).
+const EdgeCurve kTriangle = parse_edge("polygon:0.3,0.5;0.8,0.45;0.3,0.3");
+
+// The function of e with the largest coupling to any grid unknown, and that unknown.
+std::pair<int, int> strongest(const KinkBlocks& b, int N, int functions) {
+  std::pair<int, int> best{-1, -1};
+  double largest = 0;
+  for (int k = 0; k < functions; ++k)
+    for (SpMat::InnerIterator it(b.border, N + k); it; ++it)
+      if (it.row() < N && std::abs(it.value()) > largest) largest = std::abs(it.value()), best = {k, static_cast<int>(it.row())};
+  return best;
+}
+}  // namespace
+
+// Where every break of the integrand lies on a line of half cells, 15 Gauss points a direction on
+// each half cell integrate (D33)'s polynomials exactly (degree at most 28 in each variable), and
+// so, if the derivation holds, does cell_rule: the two agree to round-off, entry by entry.
+TEST(SideKinks, BlocksAreExactWhereATensorRuleIsToo) {
+  const Grid g = make_grid(64);
+  const KinkEnrichment e = make_side_kinks(g, kAlignedSquare);
+  const SpMat P = kink_interpolant(g, e);
+  const KinkBlocks blocks = assemble_kink_blocks(g, e, P, [](double, double) { return 1.0; });
+  const int N = g.unknowns();
+  const auto [k, dof] = strongest(blocks, N, e.size());
+  ASSERT_GE(k, 0);
+  for (int kk : {k, 0}) {  // the strongest and the first vertex's first spline, which runs past the corner
+    int d = dof;
+    if (kk != k) {
+      double largest = 0;
+      for (SpMat::InnerIterator it(blocks.border, N + kk); it; ++it)
+        if (it.row() < N && std::abs(it.value()) > largest) largest = std::abs(it.value()), d = static_cast<int>(it.row());
+    }
+    const Brute exact = brute(g, e, P, kk, d, 2, 15);
+    EXPECT_NEAR(blocks.border.coeff(d, N + kk), exact.b, 1e-12 * std::abs(exact.b)) << kk;
+    EXPECT_NEAR(blocks.border.coeff(N + kk, N + kk), exact.e, 1e-12 * std::abs(exact.e)) << kk;
+    EXPECT_NEAR(blocks.load[kk], exact.load, 1e-12 * std::abs(exact.load)) << kk;
+    EXPECT_GT(std::abs(exact.e), 0);
+  }
+}
+
+// On a triangle whose sides cut the squares anyhow, the blocks agree with the brute-force rule
+// within that rule's own error (8 x 8 to 16 x 16 sub-squares), as (D31)'s do.
+TEST(SideKinks, BlocksMatchABruteForceQuadratureOnATriangle) {
+  const Grid g = make_grid(64);
+  const KinkEnrichment e = make_side_kinks(g, kTriangle);
+  const SpMat P = kink_interpolant(g, e);
+  const KinkBlocks blocks = assemble_kink_blocks(g, e, P, [](double, double) { return 1.0; });
+  const int N = g.unknowns();
+  const auto [k, dof] = strongest(blocks, N, e.size());
+  ASSERT_GE(k, 0);
+  const Brute coarse = brute(g, e, P, k, dof, 8), fine = brute(g, e, P, k, dof, 16);
+  const double assembled[3] = {blocks.border.coeff(dof, N + k), blocks.border.coeff(N + k, N + k), blocks.load[k]};
+  const double rough[3] = {coarse.b, coarse.e, coarse.load}, good[3] = {fine.b, fine.e, fine.load};
+  for (int i = 0; i < 3; ++i) {
+    const double own = std::abs(good[i] - rough[i]);
+    EXPECT_LE(std::abs(assembled[i] - good[i]), std::max(own, 1e-13 * std::abs(good[i]))) << i << " assembled " << assembled[i] << " good " << good[i];
+    EXPECT_GT(std::abs(good[i]), 100 * own) << i;
+  }
+}
+
+// psi vanishes with its slopes and twist at every node; it is C^1 across cell sides; and across each
+// side of the triangle its third normal derivative jumps by 6 sum_j c_j B_j(s) / h^3, the kink of
+// (D33), read off by one-sided differences at points along the side.
+TEST(SideKinks, VanishAtNodesAreC1AndCarryTheJump) {
+  const Grid g = make_grid(64);
+  const KinkEnrichment e = make_side_kinks(g, kTriangle);
+  ASSERT_EQ(e.sides.size(), 3u);
+  const SpMat P = kink_interpolant(g, e);
+  VectorXd c(e.size());
+  for (int k = 0; k < e.size(); ++k) c[k] = (1 + 0.5 * std::sin(0.7 * k)) * std::pow(e.unit, 3);
+  const VectorXd Pc = P * c;
+  double size = 0, at_nodes = 0;
+  for (int j = 1; j < g.ny; ++j)
+    for (int i = 1; i < g.nx; ++i) {
+      const KinkValue v = field(g, e, c, Pc, g.x(i), g.y(j));
+      at_nodes = std::max({at_nodes, std::abs(v.w), std::abs(v.wx), std::abs(v.wy), std::abs(v.wxy)});
+      size = std::max(size, std::abs(v.wxx) + std::abs(v.wyy));
+    }
+  EXPECT_GT(size, 1e-3);
+  EXPECT_LT(at_nodes, 1e-12 * size);
+  const double xs = g.x(52), d = 1e-10;  // a cell side across the band near the acute corner
+  for (double y : {0.43, 0.45, 0.47}) {
+    const KinkValue l = field(g, e, c, Pc, xs - d, y), r = field(g, e, c, Pc, xs + d, y);
+    EXPECT_NEAR(l.w, r.w, 1e-12);
+    EXPECT_NEAR(l.wx, r.wx, 1e-9);
+    EXPECT_NEAR(l.wy, r.wy, 1e-9);
+  }
+  for (const KinkSide& q : e.sides)
+    for (double frac : {0.3, 0.55}) {
+      const double s = frac * q.length, px = q.x0 + s * q.tx, py = q.y0 + s * q.ty, step = 2e-5;
+      auto w = [&](double dd) { return field(g, e, c, Pc, px + dd * q.nx, py + dd * q.ny).w; };
+      auto third = [&](double side) { return side * (w(3 * side * step) - 3 * w(2 * side * step) + 3 * w(side * step) - w(0)) / (step * step * step); };
+      double jump = 0;  // 6 sum_j c_j B_j(s): F's third derivative just outside, over d^3
+      for (int k = 0; k < e.size(); ++k) jump += 6 * c[k] * kink_profile(e, k, px + 1e-4 * q.nx, py + 1e-4 * q.ny).w / std::pow(1e-4, 3);
+      EXPECT_GT(std::abs(jump), 1e-2);
+      EXPECT_NEAR(third(1) - third(-1), jump, 0.01 * std::abs(jump)) << q.x0 << "," << q.y0 << " at " << frac;
+    }
+}
+
+// (D33) needs a convex polygon with sides of at least two cells and room to the clamped edges, and
+// says which it lacks; --enrich sides turns that into an error, auto into the plain space.
+TEST(SideKinks, RefuseWhatTheyDoNotFitAndSayWhy) {
+  const Grid g = make_grid(64);
+  EXPECT_EQ(kink_misfit(g, kTriangle), "");
+  EXPECT_NE(kink_misfit(g, parse_edge("polygon:0.3,0.3;0.7,0.3;0.5,0.45;0.7,0.7;0.3,0.7")).find("convex"), std::string::npos);
+  EXPECT_NE(kink_misfit(g, parse_edge("polygon:0.3,0.3;0.7,0.3;0.7,0.32;0.3,0.33")).find("2 cells long"), std::string::npos);
+  EXPECT_NE(kink_misfit(g, parse_edge("polygon:0.05,0.3;0.7,0.3;0.7,0.7;0.05,0.7")).find("clamped edge"), std::string::npos);
+  EXPECT_NE(kink_misfit(g, parse_edge("polygon:0.375,0.375;0.625,0.375;0.625,0.625;0.375,0.625")).find("grid line"), std::string::npos);
+  EXPECT_EQ(make_side_kinks(g, parse_edge("polygon:0.375,0.375;0.625,0.375;0.5,0.6")).sides.size(), 2u);  // the base on y = 24 h
+  EXPECT_THROW(make_side_kinks(make_grid(16), kTriangle), std::invalid_argument);
+  EXPECT_FALSE(kink_fits(make_grid(16), kTriangle));
+}
+
+// A symmetric square pressed onto by the plate, solved with (D33) on its quarter and on the whole
+// plate: the mirror images of the functions must pair up (one function per orbit on the quarter),
+// or the two answers differ.
+TEST(SideKinks, TheQuarterSolvesTheWholePlatesProblem) {
+  Scene s = Scene::rectangle(1, 1).over("(x>=0.3 && x<=0.7 && y>=0.3 && y<=0.7) ? 0 : -inf", parse_edge("polygon:0.3,0.3;0.7,0.3;0.7,0.7;0.3,0.7")).loaded(-1);
+  SamplingSpec spec{SamplingKind::Edge};
+  spec.enrich.kind = EnrichSpec::Kind::Sides;
+  const SceneSolution part = solve_exact_scene(s, 64, spec, ExactOptions{}, true), whole = solve_exact_scene(s, 64, spec, ExactOptions{}, false);
+  ASSERT_TRUE(part.solved.kink && whole.solved.kink && part.solved.grid.is_part() && !whole.solved.grid.is_part());
+  EXPECT_EQ(4 * part.solved.kink->size(), whole.solved.kink->size());
+  ASSERT_TRUE(part.result.converged && whole.result.converged);
+  const double fp = part.result.lambda.sum(), fw = whole.result.lambda.sum();
+  const double size = whole.result.w.head(whole.solved.grid.unknowns()).cwiseAbs().maxCoeff();
+  EXPECT_LT((part.result.w - whole.result.w).cwiseAbs().maxCoeff(), 1e-10 * size);
+  EXPECT_NEAR(fp, fw, 1e-10 * std::abs(fw));
+  const SceneSolution plain = solve_exact_scene(s, 64, SamplingSpec{SamplingKind::Edge}, ExactOptions{}, true);
+  const int N = plain.solved.grid.unknowns();
+  EXPECT_GT((plain.result.w - part.result.w.head(N)).cwiseAbs().maxCoeff(), 1e-6 * size);  // the functions do something
 }

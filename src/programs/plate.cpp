@@ -164,9 +164,11 @@ void add_exact_options(CLI::App& app, Options& o) {
                       "auto (on a circle with edge sampling, the space widened by functions that carry the kink of the "
                       "line load at the rim (D31), on every grid of the sequence where the circle is at least 2 cells "
                       "in radius and " + plate::fmt("%g", plate::kKinkZeroCells + 1.5) + " cells from the clamped edges; "
-                      "the plain space elsewhere, and the error bars from the grids that carry it), ring (the same, and "
-                      "an error where it does not fit the grid asked for) or none (the plain space)")
-      ->check(CLI::IsMember({"auto", "ring", "none"}))
+                      "the plain space elsewhere, and the error bars from the grids that carry it; on a convex polygon, "
+                      "the same across each side (D33), where every side is at least 2 cells long), ring or sides (the "
+                      "same for a circle or a polygon, and an error where it does not fit the grid asked for) or none "
+                      "(the plain space)")
+      ->check(CLI::IsMember({"auto", "ring", "sides", "none"}))
       ->capture_default_str();
   o.exact->add_flag("--no-globalise", o.no_globalise, "end with an error if the active set repeats, instead of the monotone fallback");
   o.exact->add_flag("--no-nested", o.no_nested, "start from an empty active set, not from the coarser grid");
@@ -397,12 +399,16 @@ Run check(const Options& o) {
   else
     refuse_group(o.exact, "the penalty schemes (it applies to --scheme exact only)");
   if (exact && o.enrich != "none") {
-    const bool circle = r.spec.kind == SamplingKind::Edge && r.scene.edge.kind == EdgeCurve::Kind::Circle;
+    const bool edge = r.spec.kind == SamplingKind::Edge;
+    const bool circle = edge && r.scene.edge.kind == EdgeCurve::Kind::Circle, polygon = edge && r.scene.edge.kind == EdgeCurve::Kind::Polygon;
     if (o.enrich == "ring" && !circle)
       throw std::invalid_argument("--enrich ring needs edge sampling of a circle (--sampling edge, the cylinder or --edge circle:...)");
-    if (const std::string why = kink_misfit(r.g, r.scene.edge); o.enrich == "ring" && !why.empty())
-      throw std::invalid_argument("--enrich ring: " + why);
+    if (o.enrich == "sides" && !polygon)
+      throw std::invalid_argument("--enrich sides needs edge sampling of a polygon (--sampling edge and --edge polygon:...)");
+    if (const std::string why = kink_misfit(r.g, r.scene.edge); o.enrich != "auto" && !why.empty())
+      throw std::invalid_argument("--enrich " + o.enrich + ": " + why);
     if (circle) r.spec.enrich.kind = EnrichSpec::Kind::Ring;
+    if (polygon) r.spec.enrich.kind = EnrichSpec::Kind::Sides;
   }
   // The memory the model solved needs: the part the mirrors leave, for the exact scheme. A grid whose
   // smallest part would not fit is refused first, before the mirrors are looked for on all its nodes.
@@ -568,7 +574,8 @@ plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::Vec
   r.report.certificate_tol = r.exact_opt.tol;
   r.report.model_unknowns = scene.solved.unknowns();
   r.report.space = scene.solved.kink ? "Bogner-Fox-Schmit and " + std::to_string(scene.solved.kink->size()) +
-                                           " functions carrying the kink at the rim (D31)"
+                                           (scene.solved.kink->polygon() ? " functions carrying the kink across the polygon's sides (D33)"
+                                                                          : " functions carrying the kink at the rim (D31)")
                                      : "Bogner-Fox-Schmit";
   r.report.refinement = exact.levels.back().refinement.w;
   r.report.refinement_undone = exact.levels.back().refinement.undone;

@@ -1,0 +1,456 @@
+// Eq. (D33): the kink-carrying functions across a convex polygon's sides, and their blocks.
+#include "side_kinks.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "bfs_element.hpp"
+#include "gauss.hpp"
+
+namespace plate {
+
+namespace {
+
+double dist(const KinkSide& q, double x, double y) { return (x - q.x0) * q.nx + (y - q.y0) * q.ny; }
+double along(const KinkSide& q, double x, double y) { return (x - q.x0) * q.tx + (y - q.y0) * q.ty; }
+// The splines' reach past the side's ends: the first is centred a spacing before the first
+// vertex and spans two spacings either way.
+double reach(const KinkSide& q) { return 3 * q.spacing; }
+
+// Each spline of side q that does not vanish at arc length s, with its derivatives in s.
+template <class Visit>
+void for_splines(const KinkSide& q, double s, Visit visit) {
+  const int j0 = static_cast<int>(std::floor(s / q.spacing)) + 1;
+  for (int j = std::max(0, j0 - 1); j <= std::min(q.count - 1, j0 + 2); ++j) {
+    KinkSpline b = cubic_bspline((s - (j - 1) * q.spacing) / q.spacing);
+    if (b.v == 0 && b.d1 == 0 && b.d2 == 0) continue;
+    b.d1 /= q.spacing, b.d2 /= q.spacing * q.spacing;
+    visit(q.first + j, b);
+  }
+}
+
+// @region side-kink-functions
+// Eq. (D33): F = (d / unit)^3 B(s) across side q at distance d > 0 outside it, with its Cartesian
+// derivatives; d and s are linear in x and y, so the chain rule needs only n and t.
+KinkValue side_profile(const KinkSide& q, const KinkSpline& b, double d, double unit) {
+  if (!(d > 0)) return {};
+  const double t = d / unit, G = t * t * t, G1 = 3 * t * t / unit, G2 = 6 * t / (unit * unit);
+  const double nx = q.nx, ny = q.ny, tx = q.tx, ty = q.ty;
+  KinkValue v;
+  v.w = G * b.v;
+  v.wx = G1 * nx * b.v + G * b.d1 * tx;
+  v.wy = G1 * ny * b.v + G * b.d1 * ty;
+  v.wxx = G2 * nx * nx * b.v + 2 * G1 * b.d1 * nx * tx + G * b.d2 * tx * tx;
+  v.wxy = G2 * nx * ny * b.v + G1 * b.d1 * (nx * ty + ny * tx) + G * b.d2 * tx * ty;
+  v.wyy = G2 * ny * ny * b.v + 2 * G1 * b.d1 * ny * ty + G * b.d2 * ty * ty;
+  return v;
+}
+
+// chi = prod_i c(d_i) of (D33) with its gradient and Hessian, by the product rule one factor at a
+// time; a factor past the cut-off makes it 0.
+KinkValue side_cutoff(const KinkEnrichment& e, double x, double y) {
+  KinkValue c{1, 0, 0, 0, 0, 0};
+  for (const KinkSide& q : e.sides) {
+    const KinkRadial f = kink_cutoff(e, dist(q, x, y));
+    if (f.g == 1 && f.g1 == 0 && f.g2 == 0) continue;
+    if (f.g == 0 && f.g1 == 0 && f.g2 == 0) return {};
+    const double fx = f.g1 * q.nx, fy = f.g1 * q.ny;
+    c.wxx = c.w * f.g2 * q.nx * q.nx + f.g * c.wxx + 2 * c.wx * fx;
+    c.wxy = c.w * f.g2 * q.nx * q.ny + f.g * c.wxy + c.wx * fy + c.wy * fx;
+    c.wyy = c.w * f.g2 * q.ny * q.ny + f.g * c.wyy + 2 * c.wy * fy;
+    c.wx = c.w * fx + f.g * c.wx, c.wy = c.w * fy + f.g * c.wy;
+    c.w *= f.g;
+  }
+  return c;
+}
+// @end side-kink-functions
+
+void add(KinkValue& to, const KinkValue& v, double c) {
+  to.w += c * v.w, to.wx += c * v.wx, to.wy += c * v.wy, to.wxx += c * v.wxx, to.wxy += c * v.wxy, to.wyy += c * v.wyy;
+}
+
+// The sides of a polygon counter-clockwise, each with its splines; `why` says what does not fit.
+std::vector<KinkSide> polygon_sides(const EdgeCurve& p, double h, std::string& why) {
+  std::vector<double> vx = p.vx, vy = p.vy;
+  double area = 0;
+  const size_t m = vx.size();
+  for (size_t i = 0; i < m; ++i) area += vx[i] * vy[(i + 1) % m] - vx[(i + 1) % m] * vy[i];
+  if (area < 0) std::reverse(vx.begin(), vx.end()), std::reverse(vy.begin(), vy.end());
+  std::vector<KinkSide> sides;
+  for (size_t i = 0; i < m; ++i) {
+    KinkSide q;
+    q.x0 = vx[i], q.y0 = vy[i];
+    const double dx = vx[(i + 1) % m] - vx[i], dy = vy[(i + 1) % m] - vy[i];
+    q.length = std::hypot(dx, dy);
+    if (!(q.length >= kKinkMinRadiusCells * h)) {
+      why = "every side of the polygon must be at least " + std::to_string(static_cast<int>(kKinkMinRadiusCells)) + " cells long";
+      return {};
+    }
+    q.tx = dx / q.length, q.ty = dy / q.length, q.nx = q.ty, q.ny = -q.tx;
+    const int intervals = std::max(2, static_cast<int>(std::ceil(q.length / (kKinkKnotCells * h) - 1e-9)));
+    q.spacing = q.length / intervals, q.count = intervals + 3;
+    sides.push_back(q);
+  }
+  for (size_t i = 0; i < m; ++i) {
+    const KinkSide &a = sides[i], &b = sides[(i + 1) % m];
+    if (a.tx * b.ty - a.ty * b.tx < -1e-12) {
+      why = "the polygon is not convex";
+      return {};
+    }
+  }
+  // A side along a grid line needs no function: the squares meet there with only w and its slopes
+  // shared, so the plain space already carries a kink across it. Its F would be bicubic on every
+  // square and equal its own interpolant, psi = 0, and the bordered system singular.
+  std::vector<KinkSide> kept;
+  for (KinkSide q : sides) {
+    const double across = std::abs(q.tx) < 1e-12 ? q.x0 : std::abs(q.ty) < 1e-12 ? q.y0 : NAN;
+    if (std::abs(across / h - std::round(across / h)) < 1e-9) continue;
+    q.first = kept.empty() ? 0 : kept.back().first + kept.back().count;
+    kept.push_back(q);
+  }
+  if (kept.empty()) why = "every side lies on a grid line, where the plain space carries the kink";
+  return kept;
+}
+
+// Where each function can be nonzero, every node must carry unknowns: F_ij's nodes lie within the
+// splines' reach along the side and outer + 1.5 cells across it (side_kink_interpolant).
+std::string clearance(const Grid& g, const std::vector<KinkSide>& sides, double outer) {
+  const double margin = 0.5 * g.h;
+  for (const KinkSide& q : sides)
+    for (double s : {-reach(q), q.length + reach(q)})
+      for (double d : {0.0, outer + 1.5 * g.h}) {
+        const double x = q.x0 + s * q.tx + d * q.nx, y = q.y0 + s * q.ty + d * q.ny;
+        if (!(x > margin && y > margin && x < g.whole_lx() - margin && y < g.whole_ly() - margin)) {
+          std::ostringstream m;
+          m << "its functions reach within half a cell of a clamped edge on this grid (h = " << g.h
+            << "): the polygon needs about " << reach(q) / g.h << " cells of room past each vertex and "
+            << outer / g.h + 2 << " beyond each side";
+          return m.str();
+        }
+      }
+  return "";
+}
+
+// The spline of the whole polygon that spline J becomes in the mirror x -> 2X - x (about_x) or
+// y -> 2Y - y; -1 if there is none.
+int image_of(const std::vector<KinkSide>& sides, int J, bool about_x, double X, double Y, double tol) {
+  const auto it = std::find_if(sides.begin(), sides.end(), [J](const KinkSide& q) { return J >= q.first && J < q.first + q.count; });
+  const KinkSide& q = *it;
+  const double s = (J - q.first - 1) * q.spacing;
+  double px = q.x0 + s * q.tx, py = q.y0 + s * q.ty, nx = q.nx, ny = q.ny;
+  if (about_x) px = 2 * X - px, nx = -nx;
+  else py = 2 * Y - py, ny = -ny;
+  for (const KinkSide& r : sides) {
+    if (std::abs(r.nx - nx) > 1e-9 || std::abs(r.ny - ny) > 1e-9 || std::abs(dist(r, px, py)) > tol) continue;
+    if (std::abs(r.spacing - q.spacing) > tol) continue;
+    const double u = along(r, px, py) / r.spacing + 1;
+    const int j = static_cast<int>(std::lround(u));
+    if (std::abs(u - j) * r.spacing < tol && j >= 0 && j < r.count) return r.first + j;
+  }
+  return -1;
+}
+
+// function_of_spline and the number of functions: each mirror orbit one function; false if a
+// spline has no image.
+bool orbits(const Grid& g, KinkEnrichment& e) {
+  const int M = e.knots;
+  const double tol = 1e-9 * g.h;
+  e.function_of_spline.assign(M, -1);
+  e.functions = 0;
+  for (int j = 0; j < M; ++j) {
+    if (e.function_of_spline[j] >= 0) continue;
+    std::vector<int> orbit{j};
+    if (g.mirror_x) orbit.push_back(image_of(e.sides, j, true, g.lx(), g.ly(), tol));
+    if (g.mirror_y)
+      for (int k : std::vector<int>(orbit)) orbit.push_back(k < 0 ? -1 : image_of(e.sides, k, false, g.lx(), g.ly(), tol));
+    if (std::find(orbit.begin(), orbit.end(), -1) != orbit.end()) return false;
+    for (int k : orbit) e.function_of_spline[k] = e.functions;
+    ++e.functions;
+  }
+  return true;
+}
+
+KinkEnrichment sides_enrichment(const Grid& g, const std::vector<KinkSide>& sides, const KinkBand& band) {
+  KinkEnrichment e;
+  e.sides = sides;
+  e.inner = band.flat * g.h, e.outer = band.zero * g.h, e.unit = g.h;
+  e.knots = sides.back().first + sides.back().count;
+  return e;
+}
+
+}  // namespace
+
+std::string side_kink_misfit(const Grid& g, const EdgeCurve& p, const KinkBand& band) {
+  if (p.kind != EdgeCurve::Kind::Polygon) return "the edge is not a polygon";
+  std::string why;
+  const std::vector<KinkSide> sides = polygon_sides(p, g.h, why);
+  if (!why.empty()) return why;
+  if (const std::string room = clearance(g, sides, band.zero * g.h); !room.empty()) return room;
+  KinkEnrichment e = sides_enrichment(g, sides, band);
+  if (!orbits(g, e)) return "its functions do not map onto each other across the mirror lines";
+  return "";
+}
+
+KinkEnrichment make_side_kinks(const Grid& g, const EdgeCurve& p, const KinkBand& band) {
+  check_kink_band(band);
+  if (const std::string why = side_kink_misfit(g, p, band); !why.empty()) throw std::invalid_argument("--enrich sides: " + why);
+  std::string unused;
+  KinkEnrichment e = sides_enrichment(g, polygon_sides(p, g.h, unused), band);
+  orbits(g, e);
+  return e;
+}
+
+KinkValue side_kink_profile(const KinkEnrichment& e, int k, double x, double y) {
+  KinkValue v;
+  for (const KinkSide& q : e.sides) {
+    const double d = dist(q, x, y);
+    if (!(d > 0)) continue;
+    for_splines(q, along(q, x, y), [&](int J, const KinkSpline& b) {
+      if (e.function_of_spline[J] == k) add(v, side_profile(q, b, d, e.unit), 1.0);
+    });
+  }
+  return v;
+}
+
+SpMat side_kink_interpolant(const Grid& g, const KinkEnrichment& e) {
+  std::vector<Eigen::Triplet<double>> t;
+  const double read = e.outer + 1.5 * g.h;  // the nodes of every square where chi is not 0
+  for (int j = 0; j <= g.ny; ++j)
+    for (int i = 0; i <= g.nx; ++i) {
+      const double x = g.x(i), y = g.y(j);
+      if (!g.is_interior(i, j) || std::any_of(e.sides.begin(), e.sides.end(), [&](const KinkSide& q) { return dist(q, x, y) >= read; })) continue;
+      for (const KinkSide& q : e.sides) {
+        const double d = dist(q, x, y);
+        if (!(d > 0)) continue;
+        for_splines(q, along(q, x, y), [&](int J, const KinkSpline& b) {
+          const KinkValue v = side_profile(q, b, d, e.unit);
+          const double comp[4] = {v.w, v.wx, v.wy, v.wxy};
+          for (int c = 0; c < 4; ++c)
+            if (const int dof = g.dof(i, j, c); dof >= 0 && comp[c] != 0) t.emplace_back(dof, e.function_of_spline[J], comp[c]);
+        });
+      }
+    }
+  SpMat P(g.unknowns(), e.size());
+  P.setFromTriplets(t.begin(), t.end());
+  return P;
+}
+
+bool side_kink_near(const KinkEnrichment& e, double x, double y) {
+  bool some = false;
+  for (const KinkSide& q : e.sides) {
+    const double d = dist(q, x, y), s = along(q, x, y);
+    if (!(d < e.outer)) return false;  // chi = 0
+    some = some || (d > -e.inner && s > -reach(q) - e.inner && s < q.length + reach(q) + e.inner);
+  }
+  return some;
+}
+
+namespace {
+// D = sum_k c_k F_k - I_h(sum_k c_k F_k) at (x, y), the interpolant's share given.
+KinkValue side_difference(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y) {
+  KinkValue D;
+  add(D, interpolant, -1.0);
+  for (const KinkSide& q : e.sides) {
+    const double d = dist(q, x, y);
+    if (!(d > 0)) continue;
+    for_splines(q, along(q, x, y), [&](int J, const KinkSpline& b) { add(D, side_profile(q, b, d, e.unit), c[e.function_of_spline[J]]); });
+  }
+  return D;
+}
+}  // namespace
+
+KinkValue side_kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y) {
+  if (!side_kink_near(e, x, y)) return {};
+  const KinkValue D = side_difference(e, c, interpolant, x, y), chi = side_cutoff(e, x, y);
+  KinkValue out;
+  out.w = chi.w * D.w;
+  out.wx = chi.w * D.wx + chi.wx * D.w;
+  out.wy = chi.w * D.wy + chi.wy * D.w;
+  out.wxx = chi.w * D.wxx + 2 * chi.wx * D.wx + chi.wxx * D.w;
+  out.wxy = chi.w * D.wxy + chi.wx * D.wy + chi.wy * D.wx + chi.wxy * D.w;
+  out.wyy = chi.w * D.wyy + 2 * chi.wy * D.wy + chi.wyy * D.w;
+  return out;
+}
+
+double side_kink_value(const KinkEnrichment& e, const VectorXd& c, double interpolant, double x, double y) {
+  if (!side_kink_near(e, x, y)) return 0;
+  KinkValue I;
+  I.w = interpolant;
+  return side_cutoff(e, x, y).w * side_difference(e, c, I, x, y).w;
+}
+
+namespace {
+
+using Piece = std::vector<std::array<double, 2>>;
+
+// Each piece cut in two by the line a x + b y = c where the line crosses it.
+void split(std::vector<Piece>& pieces, double a, double b, double c, double tol) {
+  std::vector<Piece> out;
+  for (const Piece& p : pieces) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const auto& v : p) lo = std::min(lo, a * v[0] + b * v[1] - c), hi = std::max(hi, a * v[0] + b * v[1] - c);
+    if (!(lo < -tol && hi > tol)) {
+      out.push_back(p);
+      continue;
+    }
+    Piece neg, pos;
+    for (size_t i = 0; i < p.size(); ++i) {
+      const auto &u = p[i], &w = p[(i + 1) % p.size()];
+      const double fu = a * u[0] + b * u[1] - c, fw = a * w[0] + b * w[1] - c;
+      if (fu <= tol) neg.push_back(u);
+      if (fu >= -tol) pos.push_back(u);
+      if ((fu < -tol && fw > tol) || (fu > tol && fw < -tol)) {
+        const double s = fu / (fu - fw);
+        const std::array<double, 2> x{u[0] + s * (w[0] - u[0]), u[1] + s * (w[1] - u[1])};
+        neg.push_back(x), pos.push_back(x);
+      }
+    }
+    if (neg.size() >= 3) out.push_back(neg);
+    if (pos.size() >= 3) out.push_back(pos);
+  }
+  pieces = std::move(out);
+}
+
+struct Point {
+  double x, y, w;
+};
+
+// @region side-kink-pieces
+// The pieces of square (x0, y0) on which every function of (D33) is one polynomial, and a rule on
+// each that integrates (D33)'s blocks exactly. D = F - I_h F is of degree 6 (F: 3 in d, 3 in s; the
+// bicubic: 3 in x and in y), so Lap D is of degree 4; chi is of degree 5a where a of its factors are
+// neither 1 nor 0, so Lap psi is of degree 5a + 4 and (Lap psi_k, Lap psi_l) of 10a + 8. A
+// triangle's collapsed rule (Duffy: the Jacobian adds a degree in the collapsed direction) with
+// n = 5a + 5 Gauss points each way is exact to degree 2n - 2 = 10a + 8.
+std::vector<Point> cell_rule(const KinkEnrichment& e, double x0, double y0, double h) {
+  const auto at = [](double x, double y) { return std::array<double, 2>{x, y}; };
+  std::vector<Piece> pieces(1, Piece{at(x0, y0), at(x0 + h, y0), at(x0 + h, y0 + h), at(x0, y0 + h)});
+  const double tol = 1e-13 * h;
+  for (const KinkSide& q : e.sides) {
+    const double c = q.x0 * q.nx + q.y0 * q.ny;
+    double dmax = -INFINITY, smin = INFINITY, smax = -INFINITY;
+    for (double x : {x0, x0 + h})
+      for (double y : {y0, y0 + h}) dmax = std::max(dmax, dist(q, x, y)), smin = std::min(smin, along(q, x, y)), smax = std::max(smax, along(q, x, y));
+    split(pieces, q.nx, q.ny, c + e.inner, tol), split(pieces, q.nx, q.ny, c + e.outer, tol);
+    if (!(dmax > 0)) continue;  // F of this side is 0 on the square
+    split(pieces, q.nx, q.ny, c, tol);
+    const double s0 = q.x0 * q.tx + q.y0 * q.ty;
+    const int k_lo = std::max(-3, static_cast<int>(std::floor(smin / q.spacing))), k_hi = std::min(q.count, static_cast<int>(std::ceil(smax / q.spacing)));
+    for (int k = k_lo; k <= k_hi; ++k) split(pieces, q.tx, q.ty, s0 + k * q.spacing, tol);
+  }
+  std::vector<Point> rule;
+  for (const Piece& p : pieces) {
+    double cx = 0, cy = 0;
+    for (const auto& v : p) cx += v[0] / p.size(), cy += v[1] / p.size();
+    int active = 0;
+    bool zero = false;
+    for (const KinkSide& q : e.sides) {
+      const double d = dist(q, cx, cy);
+      zero = zero || d >= e.outer;
+      active += d > e.inner && d < e.outer;
+    }
+    if (zero) continue;  // chi = 0 on the piece
+    const Quadrature1D g = gauss_legendre(5 * active + 5);
+    for (size_t i = 1; i + 1 < p.size(); ++i) {
+      const auto &A = p[0], &B = p[i], &C = p[i + 1];
+      const double area2 = std::abs((B[0] - A[0]) * (C[1] - A[1]) - (B[1] - A[1]) * (C[0] - A[0]));
+      if (area2 < 1e-28 * h * h) continue;
+      for (size_t a = 0; a < g.points.size(); ++a)
+        for (size_t b = 0; b < g.points.size(); ++b) {
+          const double u = g.points[a], v = g.points[b];
+          rule.push_back({A[0] + u * (B[0] - A[0]) + u * v * (C[0] - B[0]), A[1] + u * (B[1] - A[1]) + u * v * (C[1] - B[1]),
+                          g.weights[a] * g.weights[b] * u * area2});
+        }
+    }
+  }
+  return rule;
+}
+// @end side-kink-pieces
+
+// Whether a function of (D33) can be nonzero on square (x0, y0): chi not 0 on all of it, and some
+// side's F not 0 at one of its points.
+bool square_near(const KinkEnrichment& e, double x0, double y0, double h) {
+  bool some = false;
+  for (const KinkSide& q : e.sides) {
+    double dmin = INFINITY, dmax = -INFINITY;
+    for (double x : {x0, x0 + h})
+      for (double y : {y0, y0 + h}) dmin = std::min(dmin, dist(q, x, y)), dmax = std::max(dmax, dist(q, x, y));
+    if (dmin >= e.outer) return false;
+    some = some || dmax > 0;
+  }
+  return some;
+}
+
+}  // namespace
+
+// (D33)'s blocks: (Lap phi_i, Lap psi_k), (Lap psi_k, Lap psi_l) and (f, psi_k), square by square
+// on the pieces of cell_rule.
+KinkBlocks assemble_side_kink_blocks(const Grid& g, const KinkEnrichment& e, const SpMat& interpolant, const Field& f) {
+  const int N = g.unknowns();
+  const double h = g.h;
+  const RowSpMat P = interpolant;
+  std::vector<Eigen::Triplet<double>> t;
+  KinkBlocks out;
+  out.load = VectorXd::Zero(e.size());
+  for (int ey = 0; ey < g.ny; ++ey)
+    for (int ex = 0; ex < g.nx; ++ex) {
+      const double x0 = ex * h, y0 = ey * h;
+      if (!square_near(e, x0, y0, h)) continue;
+      const std::vector<Point> rule = cell_rule(e, x0, y0, h);
+      const auto dofs = g.element_dofs(ex, ey);
+      std::vector<int> met;
+      auto local = [&](int k) {
+        const auto it = std::find(met.begin(), met.end(), k);
+        if (it != met.end()) return static_cast<int>(it - met.begin());
+        met.push_back(k);
+        return static_cast<int>(met.size()) - 1;
+      };
+      std::vector<std::array<double, 3>> entries;  // (local row, function, value) of P on the square
+      for (int q = 0; q < 16; ++q)
+        if (dofs[q] >= 0)
+          for (RowSpMat::InnerIterator it(P, dofs[q]); it; ++it) entries.push_back({double(q), double(local(static_cast<int>(it.col()))), it.value()});
+      for (const Point& p : rule)
+        for (const KinkSide& q : e.sides)
+          if (dist(q, p.x, p.y) > 0) for_splines(q, along(q, p.x, p.y), [&](int J, const KinkSpline&) { local(e.function_of_spline[J]); });
+      const int L = static_cast<int>(met.size());
+      if (L == 0) continue;
+      Eigen::MatrixXd Pl = Eigen::MatrixXd::Zero(16, L), Bl = Eigen::MatrixXd::Zero(16, L), El = Eigen::MatrixXd::Zero(L, L);
+      for (const auto& en : entries) Pl(static_cast<int>(en[0]), static_cast<int>(en[1])) = en[2];
+      VectorXd fl = VectorXd::Zero(L);
+      for (const Point& p : rule) {
+        const LocalBasis b = bfs_basis((p.x - x0) / h, (p.y - y0) / h, h);
+        const Vector16 lap = b.dxx + b.dyy;
+        VectorXd Dv = -Pl.transpose() * b.v, Dx = -Pl.transpose() * b.dx, Dy = -Pl.transpose() * b.dy, Dl = -Pl.transpose() * lap;
+        for (const KinkSide& q : e.sides) {
+          const double d = dist(q, p.x, p.y);
+          if (!(d > 0)) continue;
+          for_splines(q, along(q, p.x, p.y), [&](int J, const KinkSpline& s) {
+            const KinkValue F = side_profile(q, s, d, e.unit);
+            const int l = local(e.function_of_spline[J]);
+            Dv[l] += F.w, Dx[l] += F.wx, Dy[l] += F.wy, Dl[l] += F.wxx + F.wyy;
+          });
+        }
+        const KinkValue chi = side_cutoff(e, p.x, p.y);
+        const VectorXd psi = chi.w * Dv, lap_psi = chi.w * Dl + 2 * (chi.wx * Dx + chi.wy * Dy) + (chi.wxx + chi.wyy) * Dv;
+        Bl.noalias() += p.w * lap * lap_psi.transpose();
+        El.noalias() += p.w * lap_psi * lap_psi.transpose();
+        fl += p.w * f(p.x, p.y) * psi;
+      }
+      for (int k = 0; k < L; ++k) {
+        const int col = N + met[k];
+        for (int i = 0; i < 16; ++i)
+          if (dofs[i] >= 0 && Bl(i, k) != 0) t.emplace_back(dofs[i], col, Bl(i, k)), t.emplace_back(col, dofs[i], Bl(i, k));
+        for (int l = 0; l < L; ++l)
+          if (El(k, l) != 0) t.emplace_back(col, N + met[l], El(k, l));
+        out.load[met[k]] += fl[k];
+      }
+    }
+  out.border.resize(N + e.size(), N + e.size());
+  out.border.setFromTriplets(t.begin(), t.end());
+  return out;
+}
+
+}  // namespace plate
