@@ -32,7 +32,7 @@ CONTINUUM_DATA := results/continuum.md results/continuum.csv results/continuum_e
                   results/continuum_answer.md results/continuum_limits.csv results/continuum_timings.csv
 RIM_SERIES := results/rim_series.md results/rim_series.csv results/rim_answer.csv results/uniform_load.csv
 LIFTOFF   := results/liftoff.md results/liftoff.csv results/liftoff_timings.csv
-KINK_DATA := results/kink.md results/kink.csv results/kink_stability.csv
+KINK_DATA := results/kink.md results/kink.csv results/kink_stability.csv results/kink_polygon.csv
 OWN_SCENES := results/own_scenes.md
 KINK      := $(KINK_DATA) results/kink.svg results/kink.png
 CONTINUUM := $(CONTINUUM_DATA) results/continuum.svg results/continuum.png results/continuum_q.svg results/continuum_q.png
@@ -254,7 +254,7 @@ results/versions.csv: scripts/deps.sh | deps
 	@test $$(grep -c . $@.tmp) -eq $$(( $(words $(VERSIONED)) + 1 )) || { echo "versions.csv: dpkg-query did not find every package of VERSIONED" >&2; rm -f $@.tmp; exit 1; }
 	mv $@.tmp $@
 
-$(NUMBERS) &: $(BUILD)/prose_numbers $(RESULTS) $(RIM_SERIES) $(CONTINUUM_DATA) results/liftoff.csv results/kink.csv results/kink_stability.csv $(CROSSCHECK) results/crosscheck_penalty_limits.csv $(HARD_CASES) $(BENCH) results/large/speed_vs_error.csv results/versions.csv \
+$(NUMBERS) &: $(BUILD)/prose_numbers $(RESULTS) $(RIM_SERIES) $(CONTINUUM_DATA) results/liftoff.csv results/kink.csv results/kink_stability.csv results/kink_polygon.csv $(CROSSCHECK) results/crosscheck_penalty_limits.csv $(HARD_CASES) $(BENCH) results/large/speed_vs_error.csv results/versions.csv \
                $(wildcard results/rebuild_times.csv) reference/plate_constants.csv
 	$(BUILD)/prose_numbers --out results
 

@@ -3,8 +3,8 @@
 // the rim-contact series solves), the exact solver with the default rows in the plain space and
 // with the kink carried, on n = 16 ... 256 (20 ... 320 on the 1.25 plate): the distance of max w
 // (the field's peak), the total force and the line load point by point from the series, with the
-// observed orders; then the stability section (stability(), below). Writes results/kink.{md,csv}
-// and results/kink_stability.csv. Run by `make kink`; `kink_study --help` lists the options.
+// observed orders; then the stability section (stability(), below) and the polygons' (D33)
+// (polygons()). Writes results/kink.{md,csv}, results/kink_stability.csv and kink_polygon.csv. Run by `make kink`; `kink_study --help` lists the options.
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -201,7 +201,7 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<SceneCase>&
 // certificate holds where (D31) is hardest to carry: the smallest disk it fits, a disk as close to
 // the clamped edge as it fits, an obstacle height near the ends of double precision, a cylinder of
 // height 0 that a downward load presses the plate onto, and a polygon with an acute corner, which
-// (D31) does not carry (a circle only) and `plate` then solves in the plain space.
+// `plate` solves with (D33) across its sides.
 struct StabilityRow {
   std::string study, scene;
   int n = 0;
@@ -291,6 +291,97 @@ std::vector<StabilityRow> stability(int finest) {
   return rows;
 }
 
+// Issue 43's polygons: (D33) against the plain space on three scenes with a polygon's edge, which no
+// series solves, so each is measured against itself, grid against grid. The square lifts the plate
+// as the paper's cylinder does, and the plate then rests on its four corners alone (point loads,
+// which no function across the sides carries); pressed onto a square of height 0, the plate rests on
+// the sides and lifts off near the corners; the acute triangle is the hard scenes'.
+struct PolygonRow {
+  std::string scene, space;
+  int n = 0, functions = 0;
+  bool certified = false;
+  double max_w = 0, force = 0;
+};
+
+Scene square(double height, double load) {
+  const std::string inside = "(x>=0.3 && x<=0.7 && y>=0.3 && y<=0.7)";
+  return Scene::rectangle(1, 1)
+      .over(inside + " ? " + fmt("%.17g", height) + " : -inf", parse_edge("polygon:0.3,0.3;0.7,0.3;0.7,0.7;0.3,0.7"))
+      .loaded(load);
+}
+
+std::vector<PolygonRow> polygons(int finest) {
+  const std::vector<std::pair<std::string, Scene>> scenes = {
+      {"square-lifted", square(0.0625, 0)}, {"square-pressed", square(0, -1)}, {"acute-triangle", acute_triangle()}};
+  std::vector<PolygonRow> rows;
+  for (const auto& [key, scene] : scenes)
+    for (bool kink : {false, true})
+      for (int n = 32; n <= finest; n *= 2) {
+        SamplingSpec spec{SamplingKind::Edge};
+        if (kink) spec.enrich.kind = EnrichSpec::Kind::Sides;
+        std::cerr << "kink_study: polygons, " << key << (kink ? " kink" : " plain") << ", n = " << n << "\n";
+        const SceneSolution x = solve_exact_scene(scene, n, spec, ExactOptions{});
+        if (kink && !x.solved.kink) continue;  // (D33) does not fit this grid: its plain run is there already
+        PolygonRow r;
+        r.scene = key, r.space = x.solved.kink ? "kink" : "plain", r.n = n, r.certified = x.result.converged;
+        r.functions = x.solved.kink ? x.solved.kink->size() : 0;
+        const Measured m = measure(x, nullptr);
+        r.max_w = m.max_w, r.force = m.force;
+        if (!r.certified) std::cerr << "kink_study: polygons " << key << " n = " << n << ": " << x.result.message << "\n";
+        rows.push_back(r);
+      }
+  return rows;
+}
+
+// The step from the grid before in the same scene and space, and the order two steps give.
+struct Steps {
+  double w = NAN, f = NAN;
+  std::string order_w, order_f;
+};
+std::vector<Steps> steps_of(const std::vector<PolygonRow>& rows) {
+  std::vector<Steps> out(rows.size());
+  for (size_t i = 1; i < rows.size(); ++i) {
+    if (rows[i - 1].scene != rows[i].scene || rows[i - 1].space != rows[i].space) continue;
+    out[i].w = std::abs(rows[i].max_w - rows[i - 1].max_w), out[i].f = std::abs(rows[i].force - rows[i - 1].force);
+    if (std::isfinite(out[i - 1].w)) out[i].order_w = order(out[i - 1].w, out[i].w), out[i].order_f = order(out[i - 1].f, out[i].f);
+  }
+  return out;
+}
+
+std::string polygon_csv(const std::vector<PolygonRow>& rows) {
+  std::ostringstream o;
+  o << "# kink_study, polygons: exact solves with the default rows (points on a polygon), in the plain space\n"
+       "# and with (D33) (plate --enrich sides, on every grid it fits), on n = 32 ... finest; no series solves\n"
+       "# these scenes, so step_* is the distance from the grid before and order_* the order two steps give.\n"
+       "# Made by build/kink_study\n"
+       "scene,space,n,functions,certified,max_w,force,step_max_w,step_force,order_max_w,order_force\n";
+  const std::vector<Steps> st = steps_of(rows);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const PolygonRow& r = rows[i];
+    o << r.scene << "," << r.space << "," << r.n << "," << r.functions << "," << (r.certified ? 1 : 0) << "," << fmt("%.12g", r.max_w)
+      << "," << fmt("%.11g", r.force) << "," << (std::isfinite(st[i].w) ? fmt("%.2e", st[i].w) : "") << ","
+      << (std::isfinite(st[i].f) ? fmt("%.2e", st[i].f) : "") << "," << st[i].order_w << "," << st[i].order_f << "\n";
+  }
+  return o.str();
+}
+
+std::string polygon_markdown(const std::vector<PolygonRow>& rows) {
+  std::ostringstream o;
+  o << "### Polygons\n\n| scene | space | n | max w | step | order | total force | step | order | certified |\n"
+       "|---|---|---:|---:|---:|---:|---:|---:|---:|:---:|\n";
+  const std::vector<Steps> st = steps_of(rows);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const PolygonRow& r = rows[i];
+    const auto step = [](double v) { return std::isfinite(v) ? fmt("%.1e", v) : std::string("—"); };
+    o << "| " << r.scene << " | " << (r.space == "kink" ? "kink carried (" + std::to_string(r.functions) + " functions)" : "plain")
+      << " | " << r.n << " | " << fmt("%.10g", r.max_w) << " | " << step(st[i].w) << " | " << (st[i].order_w.empty() ? "—" : st[i].order_w)
+      << " | " << fmt("%.9g", r.force) << " | " << step(st[i].f) << " | " << (st[i].order_f.empty() ? "—" : st[i].order_f) << " | "
+      << (r.certified ? "yes" : "**no**") << " |\n";
+  }
+  o << "\nTable: " << words("kink_study.polygon_caption") << "\n";
+  return o.str();
+}
+
 std::string stability_csv(const std::vector<StabilityRow>& rows) {
   std::ostringstream o;
   o << "# kink_study, stability: exact solves with the default rows and (D31) asked for (plate --enrich auto),\n"
@@ -367,12 +458,16 @@ int main(int argc, char** argv) {
         }
     }
     const std::vector<StabilityRow> stable = stability(finest);
+    const std::vector<PolygonRow> polygon = polygons(finest);
     write_file_atomically(out + "/kink.csv", csv(rows));
     write_file_atomically(out + "/kink_stability.csv", stability_csv(stable));
-    write_file_atomically(out + "/kink.md", markdown(rows, cases) + "\n" + stability_markdown(stable));
+    write_file_atomically(out + "/kink_polygon.csv", polygon_csv(polygon));
+    write_file_atomically(out + "/kink.md", markdown(rows, cases) + "\n" + stability_markdown(stable) + "\n" + polygon_markdown(polygon));
     for (const Row& r : rows)
       if (!r.certified) return kNotConverged;
     for (const StabilityRow& r : stable)
+      if (!r.certified) return kNotConverged;
+    for (const PolygonRow& r : polygon)
       if (!r.certified) return kNotConverged;
     return kSuccess;
   });
