@@ -62,7 +62,8 @@ std::string kink_misfit(const Grid& g, const EdgeCurve& circle, const KinkBand& 
 // (D31) does not fit, or std::invalid_argument for a band that breaks KinkBand's rules.
 KinkEnrichment make_kink_enrichment(const Grid& g, const EdgeCurve& circle, int knots, const KinkBand& band = {});
 
-// F_k of (D31) at (x, y): value and derivatives (before the interpolant is subtracted).
+// F_k of (D31) at (x, y): value and derivatives (before the interpolant is subtracted); for a
+// corner of (D34), D_V, which has none to subtract (side_kinks.cpp).
 KinkValue kink_profile(const KinkEnrichment& e, int k, double x, double y);
 
 // The Hermite interpolant of each F_k: P(i, k) = unknown i of F_k at its node (N x functions).

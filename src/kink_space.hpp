@@ -40,16 +40,25 @@ struct KinkSide {
   int first = 0, count = 0;
 };
 
+// A corner of the polygon for (D34): the biharmonic's r^2 log r about it, boxed; its function is
+// spline `index` of the enrichment (after the sides').
+struct KinkCorner {
+  double x = 0, y = 0;
+  int index = 0;
+  double inner = 0, outer = 0;  // its box: the cut-off flat to inner, 0 from outer (in each coordinate)
+};
+
 struct KinkEnrichment {
   double cx = 0, cy = 0, a = 0;         // the circle of (D31)
   std::vector<KinkSide> sides;          // or the polygon of (D33), counter-clockwise
+  std::vector<KinkCorner> corners;      // and its corners (D34)
   double inner = 0, outer = 0;          // chi = 1 for d <= inner, 0 for d >= outer
   double unit = 1;                      // F_k is divided by unit^3 (the cell h^3: kink_enrichment.cpp)
   int knots = 0;                        // M: periodic splines on the whole circle, centred at 2 pi j / M (or all the sides' splines)
   std::vector<int> function_of_spline;  // spline j belongs to function function_of_spline[j]
   int functions = 0;
   int size() const { return functions; }
-  bool polygon() const { return !sides.empty(); }
+  bool polygon() const { return !sides.empty() || !corners.empty(); }
 };
 
 // The centred cubic B-spline of the knot spacing x, and its first two derivatives.

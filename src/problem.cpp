@@ -115,6 +115,19 @@ static void fit_columns(Problem& p) {
       if (it.col() < N) t.emplace_back(r, it.col(), it.value());
     if (r >= first && p.kink)
       for (RowSpMat::InnerIterator it(SP, r - first); it; ++it) t.emplace_back(r, N + it.col(), -it.value());
+    // A corner's function (D34) is not 0 on the edge and has no columns in P: the row reads it.
+    if (r >= first && p.kink && !p.kink->corners.empty()) {
+      const std::vector<RowPoint> at = edge_row_points(p.grid, p.scene.edge, p.sampling, static_cast<int>(r - first));
+      std::vector<int> done;
+      for (const KinkCorner& V : p.kink->corners) {
+        const int k = p.kink->function_of_spline[V.index];
+        if (std::find(done.begin(), done.end(), k) != done.end()) continue;
+        done.push_back(k);
+        double v = 0;
+        for (const RowPoint& q : at) v += q.weight * kink_profile(*p.kink, k, q.x, q.y).w;  // chi = 1 on the edge
+        if (v != 0) t.emplace_back(r, N + k, v);
+      }
+    }
     if (r < first || p.ends.empty()) continue;
     const std::vector<RowPoint> at = edge_row_points(p.grid, p.scene.edge, p.sampling, static_cast<int>(r - first));
     for (size_t f = 0; f < p.ends.size(); ++f) {

@@ -14,6 +14,12 @@ namespace plate {
 
 namespace {
 
+std::string fmt_cells(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+
 double dist(const KinkSide& q, double x, double y) { return (x - q.x0) * q.nx + (y - q.y0) * q.ny; }
 double along(const KinkSide& q, double x, double y) { return (x - q.x0) * q.tx + (y - q.y0) * q.ty; }
 // The splines' reach past the side's ends: the first is centred a spacing before the first
@@ -68,6 +74,59 @@ KinkValue side_cutoff(const KinkEnrichment& e, double x, double y) {
 }
 // @end side-kink-functions
 
+// @region corner-functions
+// Eq. (D34): G = rho^2 log rho about corner V, rho = r / unit, with its derivatives: the biharmonic's
+// fundamental solution up to a factor and a quadratic. A point load at V puts it into the plate, and
+// no bicubic follows its logarithmic moments. At V the second derivatives have no limit; 0 is
+// returned there.
+KinkValue corner_log(const KinkEnrichment& e, const KinkCorner& V, double x, double y) {
+  const double X = x - V.x, Y = y - V.y, u2 = e.unit * e.unit, r2 = X * X + Y * Y;
+  if (!(r2 > 0)) return {};
+  const double L = 0.5 * std::log(r2 / u2), k = 2 * L + 1;
+  return {r2 * L / u2, X * k / u2, Y * k / u2, (k + 2 * X * X / r2) / u2, 2 * X * Y / (r2 * u2), (k + 2 * Y * Y / r2) / u2};
+}
+
+// D_V = b(X) b(Y) (G - I_h G) of (D34), b the cut-off of one coordinate (1 to inner, 0 from outer),
+// I_h G the Hermite interpolant on the square that holds (x, y). The cut-off comes after the
+// interpolant, as chi does in (D31): cut first, G b would vary within a cell, and what the grid
+// cannot follow there would swamp what it cannot follow at V. D_V and its slopes and twist vanish at
+// every node, so it needs no columns of the interpolant P.
+KinkValue corner_difference(const KinkEnrichment& e, const KinkCorner& V, double x, double y) {
+  const double X = x - V.x, Y = y - V.y, h = e.unit;
+  if (!(std::abs(X) < V.outer && std::abs(Y) < V.outer)) return {};
+  const double ex = std::floor(x / h), ey = std::floor(y / h);
+  const LocalBasis b = bfs_basis(x / h - ex, y / h - ey, h);
+  KinkValue D = corner_log(e, V, x, y);
+  for (int ay = 0; ay < 2; ++ay)
+    for (int ax = 0; ax < 2; ++ax) {
+      const KinkValue n = corner_log(e, V, (ex + ax) * h, (ey + ay) * h);
+      const double comp[4] = {n.w, n.wx, n.wy, n.wxy};
+      for (int c = 0; c < 4; ++c) {
+        const int i = 4 * (ax + 2 * ay) + c;
+        D.w -= comp[c] * b.v[i], D.wx -= comp[c] * b.dx[i], D.wy -= comp[c] * b.dy[i];
+        D.wxx -= comp[c] * b.dxx[i], D.wxy -= comp[c] * b.dxy[i], D.wyy -= comp[c] * b.dyy[i];
+      }
+    }
+  KinkEnrichment box = e;
+  box.inner = V.inner, box.outer = V.outer;
+  const KinkRadial bx = kink_cutoff(box, std::abs(X)), by = kink_cutoff(box, std::abs(Y));
+  const double sx = X < 0 ? -1 : 1, sy = Y < 0 ? -1 : 1;
+  const double B = bx.g * by.g, Bx = sx * bx.g1 * by.g, By = sy * by.g1 * bx.g;
+  const double Bxx = bx.g2 * by.g, Byy = by.g2 * bx.g, Bxy = sx * sy * bx.g1 * by.g1;
+  return {B * D.w,
+          B * D.wx + Bx * D.w,
+          B * D.wy + By * D.w,
+          B * D.wxx + 2 * Bx * D.wx + Bxx * D.w,
+          B * D.wxy + Bx * D.wy + By * D.wx + Bxy * D.w,
+          B * D.wyy + 2 * By * D.wy + Byy * D.w};
+}
+// @end corner-functions
+
+// Whether D_V of corner V can be nonzero at (x, y): within its box.
+bool in_box(const KinkEnrichment& e, const KinkCorner& V, double x, double y, double grow = 0) {
+  return std::abs(x - V.x) < V.outer + grow && std::abs(y - V.y) < V.outer + grow;
+}
+
 void add(KinkValue& to, const KinkValue& v, double c) {
   to.w += c * v.w, to.wx += c * v.wx, to.wy += c * v.wy, to.wxx += c * v.wxx, to.wxy += c * v.wxy, to.wyy += c * v.wyy;
 }
@@ -111,14 +170,41 @@ std::vector<KinkSide> polygon_sides(const EdgeCurve& p, double h, std::string& w
     q.first = kept.empty() ? 0 : kept.back().first + kept.back().count;
     kept.push_back(q);
   }
-  if (kept.empty()) why = "every side lies on a grid line, where the plain space carries the kink";
   return kept;
 }
 
+// @region corner-boxes
+// The polygon's vertices as corners of (D34), their functions numbered from `first`. A box of a few
+// cells would miss, on every grid alike, the part of G - I_h G just outside it, and the error would
+// keep the plain space's order with a smaller constant; a box of a fixed size lets the order rise.
+// Its half-width is a quarter of the shorter side at the corner or a third of the corner's distance
+// from the clamped edges, whichever is less, lengths of the scene alone; but never less than the
+// band of `zero` cells, on a grid too coarse for that.
+std::vector<KinkCorner> polygon_corners(const EdgeCurve& p, const Grid& g, const KinkBand& band, int first) {
+  std::vector<KinkCorner> c;
+  const size_t m = p.vx.size();
+  for (size_t i = 0; i < m; ++i) {
+    const double x = p.vx[i], y = p.vy[i];
+    const double before = std::hypot(x - p.vx[(i + m - 1) % m], y - p.vy[(i + m - 1) % m]);
+    const double after = std::hypot(x - p.vx[(i + 1) % m], y - p.vy[(i + 1) % m]);
+    const double room = std::min({x, y, g.whole_lx() - x, g.whole_ly() - y});
+    const double outer = std::max(std::min(0.25 * std::min(before, after), room / 3), band.zero * g.h);
+    c.push_back({x, y, first + static_cast<int>(i), outer * band.flat / band.zero, outer});
+  }
+  return c;
+}
+// @end corner-boxes
+
 // Where each function can be nonzero, every node must carry unknowns: F_ij's nodes lie within the
 // splines' reach along the side and outer + 1.5 cells across it (side_kink_interpolant).
-std::string clearance(const Grid& g, const std::vector<KinkSide>& sides, double outer) {
+std::string clearance(const Grid& g, const std::vector<KinkSide>& sides, const std::vector<KinkCorner>& corners, double outer) {
   const double margin = 0.5 * g.h;
+  for (const KinkCorner& V : corners) {
+    const double room = V.outer + 1.5 * g.h + margin;
+    if (!(V.x > room && V.y > room && V.x < g.whole_lx() - room && V.y < g.whole_ly() - room))
+      return "a corner's function (D34) reaches within half a cell of a clamped edge on this grid (h = " + fmt_cells(g.h) +
+             "): each corner needs " + fmt_cells(room / g.h) + " cells of room";
+  }
   for (const KinkSide& q : sides)
     for (double s : {-reach(q), q.length + reach(q)})
       for (double d : {0.0, outer + 1.5 * g.h}) {
@@ -135,8 +221,16 @@ std::string clearance(const Grid& g, const std::vector<KinkSide>& sides, double 
 }
 
 // The spline of the whole polygon that spline J becomes in the mirror x -> 2X - x (about_x) or
-// y -> 2Y - y; -1 if there is none.
-int image_of(const std::vector<KinkSide>& sides, int J, bool about_x, double X, double Y, double tol) {
+// y -> 2Y - y (a side's spline, or a corner's function); -1 if there is none.
+int image_of(const KinkEnrichment& e, int J, bool about_x, double X, double Y, double tol) {
+  const std::vector<KinkSide>& sides = e.sides;
+  for (const KinkCorner& V : e.corners)
+    if (V.index == J) {
+      const double px = about_x ? 2 * X - V.x : V.x, py = about_x ? V.y : 2 * Y - V.y;
+      for (const KinkCorner& W : e.corners)
+        if (std::abs(W.x - px) < tol && std::abs(W.y - py) < tol) return W.index;
+      return -1;
+    }
   const auto it = std::find_if(sides.begin(), sides.end(), [J](const KinkSide& q) { return J >= q.first && J < q.first + q.count; });
   const KinkSide& q = *it;
   const double s = (J - q.first - 1) * q.spacing;
@@ -163,9 +257,9 @@ bool orbits(const Grid& g, KinkEnrichment& e) {
   for (int j = 0; j < M; ++j) {
     if (e.function_of_spline[j] >= 0) continue;
     std::vector<int> orbit{j};
-    if (g.mirror_x) orbit.push_back(image_of(e.sides, j, true, g.lx(), g.ly(), tol));
+    if (g.mirror_x) orbit.push_back(image_of(e, j, true, g.lx(), g.ly(), tol));
     if (g.mirror_y)
-      for (int k : std::vector<int>(orbit)) orbit.push_back(k < 0 ? -1 : image_of(e.sides, k, false, g.lx(), g.ly(), tol));
+      for (int k : std::vector<int>(orbit)) orbit.push_back(k < 0 ? -1 : image_of(e, k, false, g.lx(), g.ly(), tol));
     if (std::find(orbit.begin(), orbit.end(), -1) != orbit.end()) return false;
     for (int k : orbit) e.function_of_spline[k] = e.functions;
     ++e.functions;
@@ -173,11 +267,13 @@ bool orbits(const Grid& g, KinkEnrichment& e) {
   return true;
 }
 
-KinkEnrichment sides_enrichment(const Grid& g, const std::vector<KinkSide>& sides, const KinkBand& band) {
+KinkEnrichment sides_enrichment(const Grid& g, const EdgeCurve& p, const std::vector<KinkSide>& sides, const KinkBand& band) {
   KinkEnrichment e;
   e.sides = sides;
   e.inner = band.flat * g.h, e.outer = band.zero * g.h, e.unit = g.h;
-  e.knots = sides.back().first + sides.back().count;
+  const int splines = sides.empty() ? 0 : sides.back().first + sides.back().count;
+  e.corners = polygon_corners(p, g, band, splines);
+  e.knots = splines + static_cast<int>(e.corners.size());
   return e;
 }
 
@@ -188,8 +284,8 @@ std::string side_kink_misfit(const Grid& g, const EdgeCurve& p, const KinkBand& 
   std::string why;
   const std::vector<KinkSide> sides = polygon_sides(p, g.h, why);
   if (!why.empty()) return why;
-  if (const std::string room = clearance(g, sides, band.zero * g.h); !room.empty()) return room;
-  KinkEnrichment e = sides_enrichment(g, sides, band);
+  KinkEnrichment e = sides_enrichment(g, p, sides, band);
+  if (const std::string room = clearance(g, sides, e.corners, band.zero * g.h); !room.empty()) return room;
   if (!orbits(g, e)) return "its functions do not map onto each other across the mirror lines";
   return "";
 }
@@ -198,7 +294,7 @@ KinkEnrichment make_side_kinks(const Grid& g, const EdgeCurve& p, const KinkBand
   check_kink_band(band);
   if (const std::string why = side_kink_misfit(g, p, band); !why.empty()) throw std::invalid_argument("--enrich sides: " + why);
   std::string unused;
-  KinkEnrichment e = sides_enrichment(g, polygon_sides(p, g.h, unused), band);
+  KinkEnrichment e = sides_enrichment(g, p, polygon_sides(p, g.h, unused), band);
   orbits(g, e);
   return e;
 }
@@ -212,6 +308,8 @@ KinkValue side_kink_profile(const KinkEnrichment& e, int k, double x, double y) 
       if (e.function_of_spline[J] == k) add(v, side_profile(q, b, d, e.unit), 1.0);
     });
   }
+  for (const KinkCorner& V : e.corners)
+    if (e.function_of_spline[V.index] == k) add(v, corner_difference(e, V, x, y), 1.0);
   return v;
 }
 
@@ -238,7 +336,8 @@ SpMat side_kink_interpolant(const Grid& g, const KinkEnrichment& e) {
   return P;
 }
 
-bool side_kink_near(const KinkEnrichment& e, double x, double y) {
+// Whether some side's psi can be nonzero at (x, y): chi not 0, and within reach of a side's splines.
+static bool near_sides(const KinkEnrichment& e, double x, double y) {
   bool some = false;
   for (const KinkSide& q : e.sides) {
     const double d = dist(q, x, y), s = along(q, x, y);
@@ -248,8 +347,14 @@ bool side_kink_near(const KinkEnrichment& e, double x, double y) {
   return some;
 }
 
+static bool near_corner(const KinkEnrichment& e, double x, double y) {
+  return std::any_of(e.corners.begin(), e.corners.end(), [&](const KinkCorner& V) { return in_box(e, V, x, y); });
+}
+
+bool side_kink_near(const KinkEnrichment& e, double x, double y) { return near_sides(e, x, y) || near_corner(e, x, y); }
+
 namespace {
-// D = sum_k c_k F_k - I_h(sum_k c_k F_k) at (x, y), the interpolant's share given.
+// The sides' D = sum c F - I_h(sum c F) at (x, y), the interpolant's share given.
 KinkValue side_difference(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y) {
   KinkValue D;
   add(D, interpolant, -1.0);
@@ -260,26 +365,36 @@ KinkValue side_difference(const KinkEnrichment& e, const VectorXd& c, const Kink
   }
   return D;
 }
+// The corners' sum c D_V, which chi does not multiply: cut off again at the sides' band, a corner's
+// function would lose, a few cells from the sides, what its box keeps for the order's sake
+// (polygon_corners); measured, the order fell back to 2.
+KinkValue corners_sum(const KinkEnrichment& e, const VectorXd& c, double x, double y) {
+  KinkValue D;
+  for (const KinkCorner& V : e.corners)
+    if (in_box(e, V, x, y)) add(D, corner_difference(e, V, x, y), c[e.function_of_spline[V.index]]);
+  return D;
+}
 }  // namespace
 
 KinkValue side_kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y) {
-  if (!side_kink_near(e, x, y)) return {};
+  KinkValue out = near_corner(e, x, y) ? corners_sum(e, c, x, y) : KinkValue{};
+  if (!near_sides(e, x, y)) return out;
   const KinkValue D = side_difference(e, c, interpolant, x, y), chi = side_cutoff(e, x, y);
-  KinkValue out;
-  out.w = chi.w * D.w;
-  out.wx = chi.w * D.wx + chi.wx * D.w;
-  out.wy = chi.w * D.wy + chi.wy * D.w;
-  out.wxx = chi.w * D.wxx + 2 * chi.wx * D.wx + chi.wxx * D.w;
-  out.wxy = chi.w * D.wxy + chi.wx * D.wy + chi.wy * D.wx + chi.wxy * D.w;
-  out.wyy = chi.w * D.wyy + 2 * chi.wy * D.wy + chi.wyy * D.w;
+  out.w += chi.w * D.w;
+  out.wx += chi.w * D.wx + chi.wx * D.w;
+  out.wy += chi.w * D.wy + chi.wy * D.w;
+  out.wxx += chi.w * D.wxx + 2 * chi.wx * D.wx + chi.wxx * D.w;
+  out.wxy += chi.w * D.wxy + chi.wx * D.wy + chi.wy * D.wx + chi.wxy * D.w;
+  out.wyy += chi.w * D.wyy + 2 * chi.wy * D.wy + chi.wyy * D.w;
   return out;
 }
 
 double side_kink_value(const KinkEnrichment& e, const VectorXd& c, double interpolant, double x, double y) {
-  if (!side_kink_near(e, x, y)) return 0;
+  const double v = near_corner(e, x, y) ? corners_sum(e, c, x, y).w : 0;
+  if (!near_sides(e, x, y)) return v;
   KinkValue I;
   I.w = interpolant;
-  return side_cutoff(e, x, y).w * side_difference(e, c, I, x, y).w;
+  return v + side_cutoff(e, x, y).w * side_difference(e, c, I, x, y).w;
 }
 
 namespace {
@@ -325,6 +440,51 @@ struct Point {
 // neither 1 nor 0, so Lap psi is of degree 5a + 4 and (Lap psi_k, Lap psi_l) of 10a + 8. A
 // triangle's collapsed rule (Duffy: the Jacobian adds a degree in the collapsed direction) with
 // n = 5a + 5 Gauss points each way is exact to degree 2n - 2 = 10a + 8.
+// The collapsed (Duffy) rule on triangle (A, B, C), u running from A: x = A + u (B - A) + u v (C - B),
+// with Jacobian u |(B - A) x (C - B)|. The Jacobian's u adds a degree in u, so n points each way are
+// exact to degree 2n - 2. Graded, the u-rule is composite on [s^(k+1), s^k] towards A, for an
+// integrand with a logarithm at A (D34).
+void triangle_rule(const std::array<double, 2>& A, const std::array<double, 2>& B, const std::array<double, 2>& C, int n,
+                   bool graded, double h, std::vector<Point>& rule) {
+  const double area2 = std::abs((B[0] - A[0]) * (C[1] - A[1]) - (B[1] - A[1]) * (C[0] - A[0]));
+  if (area2 < 1e-28 * h * h) return;
+  const Quadrature1D g = gauss_legendre(n);
+  constexpr double kRatio = 0.2;
+  constexpr int kLevels = 10;
+  std::vector<std::pair<double, double>> us;  // (u, weight)
+  for (int level = 0; level < (graded ? kLevels + 1 : 1); ++level) {
+    const double hi = graded ? std::pow(kRatio, level) : 1, lo = graded && level < kLevels ? hi * kRatio : 0;
+    for (size_t a = 0; a < g.points.size(); ++a) us.push_back({lo + (hi - lo) * g.points[a], (hi - lo) * g.weights[a]});
+  }
+  for (const auto& [u, wu] : us)
+    for (size_t b = 0; b < g.points.size(); ++b) {
+      const double v = g.points[b];
+      rule.push_back({A[0] + u * (B[0] - A[0]) + u * v * (C[0] - B[0]), A[1] + u * (B[1] - A[1]) + u * v * (C[1] - B[1]),
+                      wu * g.weights[b] * u * area2});
+    }
+}
+
+// The point of convex piece p nearest to (x, y), made one of its vertices: the fan's apex.
+Piece with_nearest_first(const Piece& p, double x, double y) {
+  double best = INFINITY;
+  size_t edge = 0;
+  std::array<double, 2> at{};
+  for (size_t i = 0; i < p.size(); ++i) {
+    const auto &a = p[i], &b = p[(i + 1) % p.size()];
+    const double ex = b[0] - a[0], ey = b[1] - a[1], L2 = ex * ex + ey * ey;
+    const double t = L2 > 0 ? std::clamp(((x - a[0]) * ex + (y - a[1]) * ey) / L2, 0.0, 1.0) : 0;
+    const std::array<double, 2> q{a[0] + t * ex, a[1] + t * ey};
+    const double d = std::hypot(q[0] - x, q[1] - y);
+    if (d < best) best = d, edge = i, at = q;
+  }
+  Piece out{at};
+  for (size_t k = 1; k <= p.size(); ++k) {
+    const auto& v = p[(edge + k) % p.size()];
+    if (std::hypot(v[0] - at[0], v[1] - at[1]) > 1e-14 * (std::abs(at[0]) + std::abs(at[1]) + 1)) out.push_back(v);
+  }
+  return out;
+}
+
 std::vector<Point> cell_rule(const KinkEnrichment& e, double x0, double y0, double h) {
   const auto at = [](double x, double y) { return std::array<double, 2>{x, y}; };
   std::vector<Piece> pieces(1, Piece{at(x0, y0), at(x0 + h, y0), at(x0 + h, y0 + h), at(x0, y0 + h)});
@@ -341,10 +501,16 @@ std::vector<Point> cell_rule(const KinkEnrichment& e, double x0, double y0, doub
     const int k_lo = std::max(-3, static_cast<int>(std::floor(smin / q.spacing))), k_hi = std::min(q.count, static_cast<int>(std::ceil(smax / q.spacing)));
     for (int k = k_lo; k <= k_hi; ++k) split(pieces, q.tx, q.ty, s0 + k * q.spacing, tol);
   }
+  // A corner's box breaks at its cut-off's lines, and the lines through the corner make it a vertex
+  // of every piece it touches, where the graded rule can meet its logarithm.
+  for (const KinkCorner& V : e.corners)
+    for (double off : {-V.outer, -V.inner, 0.0, V.inner, V.outer})
+      split(pieces, 1, 0, V.x + off, tol), split(pieces, 0, 1, V.y + off, tol);
   std::vector<Point> rule;
   for (const Piece& p : pieces) {
-    double cx = 0, cy = 0;
+    double cx = 0, cy = 0, size = 0;
     for (const auto& v : p) cx += v[0] / p.size(), cy += v[1] / p.size();
+    for (const auto& v : p) size = std::max(size, 2 * std::hypot(v[0] - cx, v[1] - cy));
     int active = 0;
     bool zero = false;
     for (const KinkSide& q : e.sides) {
@@ -352,27 +518,41 @@ std::vector<Point> cell_rule(const KinkEnrichment& e, double x0, double y0, doub
       zero = zero || d >= e.outer;
       active += d > e.inner && d < e.outer;
     }
-    if (zero) continue;  // chi = 0 on the piece
-    const Quadrature1D g = gauss_legendre(5 * active + 5);
-    for (size_t i = 1; i + 1 < p.size(); ++i) {
-      const auto &A = p[0], &B = p[i], &C = p[i + 1];
-      const double area2 = std::abs((B[0] - A[0]) * (C[1] - A[1]) - (B[1] - A[1]) * (C[0] - A[0]));
-      if (area2 < 1e-28 * h * h) continue;
-      for (size_t a = 0; a < g.points.size(); ++a)
-        for (size_t b = 0; b < g.points.size(); ++b) {
-          const double u = g.points[a], v = g.points[b];
-          rule.push_back({A[0] + u * (B[0] - A[0]) + u * v * (C[0] - B[0]), A[1] + u * (B[1] - A[1]) + u * v * (C[1] - B[1]),
-                          g.weights[a] * g.weights[b] * u * area2});
-        }
+    const int n = 5 * active + 5;
+    // Near a corner whose F is not 0 on the piece, a logarithm: graded from the nearest point where
+    // the corner is within the piece's size, else Gauss with points enough for a smooth log.
+    const KinkCorner* near = nullptr;
+    double gap = INFINITY;
+    for (const KinkCorner& V : e.corners)
+      if (in_box(e, V, cx, cy)) {
+        const Piece fan = with_nearest_first(p, V.x, V.y);
+        const double d = std::hypot(fan[0][0] - V.x, fan[0][1] - V.y);
+        if (d < gap) gap = d, near = &V;
+      }
+    if (zero && !near) continue;  // chi = 0 on the piece, and no corner's box
+    if (near && gap < size) {
+      const Piece fan = with_nearest_first(p, near->x, near->y);
+      // At the corner itself the grading meets the logarithm and the rest is smooth; from a point
+      // near it, the logarithm a fraction of the piece away also slows the rule across: 8 points
+      // left 4e-10 of a block entry there (against a polar rule about the corner), 16 do not.
+      for (size_t i = 1; i + 1 < fan.size(); ++i) triangle_rule(fan[0], fan[i], fan[i + 1], std::max(n, gap > 0 ? 16 : 8), true, h, rule);
+      continue;
     }
+    // Several sizes away G is smooth on the piece, and D_V small: fewer points suffice there.
+    const int m = !near ? n : std::max(n, gap < 3 * size ? 16 : 12);
+    for (size_t i = 1; i + 1 < p.size(); ++i) triangle_rule(p[0], p[i], p[i + 1], m, false, h, rule);
   }
   return rule;
 }
 // @end side-kink-pieces
 
-// Whether a function of (D33) can be nonzero on square (x0, y0): chi not 0 on all of it, and some
-// side's F not 0 at one of its points.
+// Whether a function of (D33) or (D34) can be nonzero on square (x0, y0): a corner's box meets it,
+// or chi is not 0 on all of it and some side's F is not 0 at one of its points.
 bool square_near(const KinkEnrichment& e, double x0, double y0, double h) {
+  if (std::any_of(e.corners.begin(), e.corners.end(), [&](const KinkCorner& V) {
+        return std::abs(x0 + 0.5 * h - V.x) < V.outer + h && std::abs(y0 + 0.5 * h - V.y) < V.outer + h;
+      }))
+    return true;
   bool some = false;
   for (const KinkSide& q : e.sides) {
     double dmin = INFINITY, dmax = -INFINITY;
@@ -412,9 +592,12 @@ KinkBlocks assemble_side_kink_blocks(const Grid& g, const KinkEnrichment& e, con
       for (int q = 0; q < 16; ++q)
         if (dofs[q] >= 0)
           for (RowSpMat::InnerIterator it(P, dofs[q]); it; ++it) entries.push_back({double(q), double(local(static_cast<int>(it.col()))), it.value()});
-      for (const Point& p : rule)
+      for (const Point& p : rule) {
         for (const KinkSide& q : e.sides)
           if (dist(q, p.x, p.y) > 0) for_splines(q, along(q, p.x, p.y), [&](int J, const KinkSpline&) { local(e.function_of_spline[J]); });
+        for (const KinkCorner& V : e.corners)
+          if (in_box(e, V, p.x, p.y)) local(e.function_of_spline[V.index]);
+      }
       const int L = static_cast<int>(met.size());
       if (L == 0) continue;
       Eigen::MatrixXd Pl = Eigen::MatrixXd::Zero(16, L), Bl = Eigen::MatrixXd::Zero(16, L), El = Eigen::MatrixXd::Zero(L, L);
@@ -434,7 +617,13 @@ KinkBlocks assemble_side_kink_blocks(const Grid& g, const KinkEnrichment& e, con
           });
         }
         const KinkValue chi = side_cutoff(e, p.x, p.y);
-        const VectorXd psi = chi.w * Dv, lap_psi = chi.w * Dl + 2 * (chi.wx * Dx + chi.wy * Dy) + (chi.wxx + chi.wyy) * Dv;
+        VectorXd psi = chi.w * Dv, lap_psi = chi.w * Dl + 2 * (chi.wx * Dx + chi.wy * Dy) + (chi.wxx + chi.wyy) * Dv;
+        for (const KinkCorner& V : e.corners) {  // chi does not multiply them (corners_sum)
+          if (!in_box(e, V, p.x, p.y)) continue;
+          const KinkValue F = corner_difference(e, V, p.x, p.y);
+          const int l = local(e.function_of_spline[V.index]);
+          psi[l] += F.w, lap_psi[l] += F.wxx + F.wyy;
+        }
         Bl.noalias() += p.w * lap * lap_psi.transpose();
         El.noalias() += p.w * lap_psi * lap_psi.transpose();
         fl += p.w * f(p.x, p.y) * psi;
