@@ -165,7 +165,8 @@ void add_exact_options(CLI::App& app, Options& o) {
                       "line load at the rim (D31), on every grid of the sequence where the circle is at least 2 cells "
                       "in radius and " + plate::fmt("%g", plate::kKinkZeroCells + 1.5) + " cells from the clamped edges; "
                       "the plain space elsewhere, and the error bars from the grids that carry it; on a convex polygon, "
-                      "the same across each side (D33), where every side is at least 2 cells long), ring or sides (the "
+                      "the same across each side (D33) and a function for the point load at each corner (D34), where "
+                      "every side is at least 2 cells long and they clear the clamped edges), ring or sides (the "
                       "same for a circle or a polygon, and an error where it does not fit the grid asked for) or none "
                       "(the plain space)")
       ->check(CLI::IsMember({"auto", "ring", "sides", "none"}))
@@ -508,7 +509,8 @@ void set_error_bars(Run& r, const std::vector<plate::ExactLevel>& levels) {
     return;
   }
   if (across) {
-    r.report.bar_grids_note = "n = " + std::to_string(use[0]->cells) + " carries the kink (D31), which the coarser grids do not fit: each bar is its step from n = " +
+    const char* which = r.scene.edge.kind == EdgeCurve::Kind::Polygon ? "the kink (D33) and the corners' functions (D34)" : "the kink (D31)";
+    r.report.bar_grids_note = "n = " + std::to_string(use[0]->cells) + " carries " + which + ", which the coarser grids do not fit: each bar is its step from n = " +
                               std::to_string(below.back()->cells) + " plus that grid's own bar";
     for (const auto* l : below) r.report.bar_grids.push_back(l->cells);
   }
@@ -574,7 +576,7 @@ plate::SolveResult solve_exactly(Run& r, plate::SceneSolution& scene, plate::Vec
   r.report.certificate_tol = r.exact_opt.tol;
   r.report.model_unknowns = scene.solved.unknowns();
   r.report.space = scene.solved.kink ? "Bogner-Fox-Schmit and " + std::to_string(scene.solved.kink->size()) +
-                                           (scene.solved.kink->polygon() ? " functions carrying the kink across the polygon's sides (D33)"
+                                           (scene.solved.kink->polygon() ? " functions carrying the kink across the polygon's sides (D33) and the point loads at its corners (D34)"
                                                                           : " functions carrying the kink at the rim (D31)")
                                      : "Bogner-Fox-Schmit";
   r.report.refinement = exact.levels.back().refinement.w;
