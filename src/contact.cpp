@@ -59,8 +59,8 @@ PlateField::PlateField(const Problem& p, const VectorXd& w) : p_(p), w_(w) {
 }
 
 // The enrichment's share (D31) at (x, y), with its interpolant's part I read by the caller.
-PointValues PlateField::share(const PointValues& I, double x, double y) const {
-  const KinkValue k = kink_field(*p_.kink, c_, KinkValue{I.w, I.wx, I.wy, I.wxx, I.wxy, I.wyy}, x, y);
+PointValues PlateField::share(const PointValues& I, double x, double y, const int* cell) const {
+  const KinkValue k = kink_field(*p_.kink, c_, KinkValue{I.w, I.wx, I.wy, I.wxx, I.wxy, I.wyy}, x, y, cell);
   return {k.w, k.wx, k.wy, k.wxx, k.wxy, k.wyy};
 }
 
@@ -97,7 +97,7 @@ PointValues PlateField::enrichment_in(int ex, int ey, double t, double s, double
   const int cell[2] = {ex, ey};
   const PointValues e = ends_at(x, y, cell, t, s);
   if (!p_.kink || !kink_near(*p_.kink, x, y)) return e;
-  const PointValues k = share(evaluate_in(p_.grid, Pc_, ex, ey, t, s), x, y);
+  const PointValues k = share(evaluate_in(p_.grid, Pc_, ex, ey, t, s), x, y, cell);
   return p_.ends.empty() ? k : plus(e, k);
 }
 

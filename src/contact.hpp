@@ -27,7 +27,7 @@ class PlateField {
   PointValues enrichment_in(int ex, int ey, double t, double s, double x, double y) const;
 
  private:
-  PointValues share(const PointValues& interpolant, double x, double y) const;
+  PointValues share(const PointValues& interpolant, double x, double y, const int* cell = nullptr) const;
   PointValues ends_at(double x, double y, const int* cell, double t, double s) const;
   const Problem& p_;
   const VectorXd& w_;

@@ -437,8 +437,8 @@ bool kink_near(const KinkEnrichment& e, double x, double y) {
   return (lo <= 0 || s > lo * lo) && s < hi * hi;
 }
 
-KinkValue kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y) {
-  if (e.polygon()) return side_kink_field(e, c, interpolant, x, y);
+KinkValue kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y, const int* cell) {
+  if (e.polygon()) return side_kink_field(e, c, interpolant, x, y, cell);
   KinkValue out;
   if (!kink_near(e, x, y)) return out;
   const double dx = x - e.cx, dy = y - e.cy, r = std::hypot(dx, dy);

@@ -80,7 +80,10 @@ bool kink_near(const KinkEnrichment& e, double x, double y);
 // sum_k c_k psi_k at (x, y), given `interpolant`, the value and derivatives there of the grid's
 // functions with coefficients P c (the interpolant of sum_k c_k F_k, which the caller reads from the
 // grid: contact.hpp's PlateField, across mirror lines too): the enrichment's share of the field.
-KinkValue kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y);
+// `cell` (ex, ey), where given, is the square whose polynomials are read: at a node or on a cell side
+// the second derivatives of a corner's function (D34) differ from square to square, as the grid's do.
+KinkValue kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y,
+                     const int* cell = nullptr);
 // Its value alone (kink_field's w, the same number), given the interpolant's value there.
 double kink_value(const KinkEnrichment& e, const VectorXd& c, double interpolant, double x, double y);
 

@@ -54,7 +54,7 @@ struct KinkEnrichment {
   std::vector<KinkCorner> corners;      // and its corners (D34)
   double inner = 0, outer = 0;          // chi = 1 for d <= inner, 0 for d >= outer
   double unit = 1;                      // F_k is divided by unit^3 (the cell h^3: kink_enrichment.cpp)
-  int knots = 0;                        // M: periodic splines on the whole circle, centred at 2 pi j / M (or all the sides' splines)
+  int knots = 0;                        // M: periodic splines on the whole circle, centred at 2 pi j / M (or the sides' splines, then one per corner)
   std::vector<int> function_of_spline;  // spline j belongs to function function_of_spline[j]
   int functions = 0;
   int size() const { return functions; }

@@ -124,7 +124,7 @@ static void fit_columns(Problem& p) {
         if (std::find(done.begin(), done.end(), k) != done.end()) continue;
         done.push_back(k);
         double v = 0;
-        for (const RowPoint& q : at) v += q.weight * kink_profile(*p.kink, k, q.x, q.y).w;  // chi = 1 on the edge
+        for (const RowPoint& q : at) v += q.weight * kink_profile(*p.kink, k, q.x, q.y).w;  // D_V: psi_V itself
         if (v != 0) t.emplace_back(r, N + k, v);
       }
     }

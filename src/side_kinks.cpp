@@ -91,10 +91,10 @@ KinkValue corner_log(const KinkEnrichment& e, const KinkCorner& V, double x, dou
 // interpolant, as chi does in (D31): cut first, G b would vary within a cell, and what the grid
 // cannot follow there would swamp what it cannot follow at V. D_V and its slopes and twist vanish at
 // every node, so it needs no columns of the interpolant P.
-KinkValue corner_difference(const KinkEnrichment& e, const KinkCorner& V, double x, double y) {
+KinkValue corner_difference(const KinkEnrichment& e, const KinkCorner& V, double x, double y, const int* cell = nullptr) {
   const double X = x - V.x, Y = y - V.y, h = e.unit;
   if (!(std::abs(X) < V.outer && std::abs(Y) < V.outer)) return {};
-  const double ex = std::floor(x / h), ey = std::floor(y / h);
+  const double ex = cell ? cell[0] : std::floor(x / h), ey = cell ? cell[1] : std::floor(y / h);
   const LocalBasis b = bfs_basis(x / h - ex, y / h - ey, h);
   KinkValue D = corner_log(e, V, x, y);
   for (int ay = 0; ay < 2; ++ay)
@@ -107,7 +107,7 @@ KinkValue corner_difference(const KinkEnrichment& e, const KinkCorner& V, double
         D.wxx -= comp[c] * b.dxx[i], D.wxy -= comp[c] * b.dxy[i], D.wyy -= comp[c] * b.dyy[i];
       }
     }
-  KinkEnrichment box = e;
+  KinkEnrichment box;  // the corner's own band, for kink_cutoff
   box.inner = V.inner, box.outer = V.outer;
   const KinkRadial bx = kink_cutoff(box, std::abs(X)), by = kink_cutoff(box, std::abs(Y));
   const double sx = X < 0 ? -1 : 1, sy = Y < 0 ? -1 : 1;
@@ -131,18 +131,52 @@ void add(KinkValue& to, const KinkValue& v, double c) {
   to.w += c * v.w, to.wx += c * v.wx, to.wy += c * v.wy, to.wxx += c * v.wxx, to.wxy += c * v.wxy, to.wyy += c * v.wyy;
 }
 
-// The sides of a polygon counter-clockwise, each with its splines; `why` says what does not fit.
-std::vector<KinkSide> polygon_sides(const EdgeCurve& p, double h, std::string& why) {
-  std::vector<double> vx = p.vx, vy = p.vy;
+// The polygon's vertices counter-clockwise, with any vertex that lies on the straight line through
+// its neighbours left out (it is no corner, and its two sides would bring the same splines twice, a
+// singular system); empty, and `why` said, unless the polygon is convex and turns once round.
+struct Outline {
+  std::vector<double> x, y;
+};
+Outline convex_outline(const EdgeCurve& p, std::string& why) {
+  Outline o{p.vx, p.vy};
   double area = 0;
-  const size_t m = vx.size();
-  for (size_t i = 0; i < m; ++i) area += vx[i] * vy[(i + 1) % m] - vx[(i + 1) % m] * vy[i];
-  if (area < 0) std::reverse(vx.begin(), vx.end()), std::reverse(vy.begin(), vy.end());
+  for (size_t i = 0; i < o.x.size(); ++i) area += o.x[i] * o.y[(i + 1) % o.x.size()] - o.x[(i + 1) % o.x.size()] * o.y[i];
+  if (area < 0) std::reverse(o.x.begin(), o.x.end()), std::reverse(o.y.begin(), o.y.end());
+  double scale = 0;
+  for (size_t i = 0; i < o.x.size(); ++i) scale = std::max({scale, std::abs(o.x[i]), std::abs(o.y[i])});
+  for (bool dropped = true; dropped && o.x.size() >= 3;) {
+    dropped = false;
+    for (size_t i = 0; i < o.x.size() && !dropped; ++i) {
+      const size_t m = o.x.size(), a = (i + m - 1) % m, b = (i + 1) % m;
+      const double ux = o.x[i] - o.x[a], uy = o.y[i] - o.y[a], vx = o.x[b] - o.x[i], vy = o.y[b] - o.y[i];
+      if (std::abs(ux * vy - uy * vx) <= 1e-12 * scale * scale && ux * vx + uy * vy >= 0)
+        o.x.erase(o.x.begin() + static_cast<long>(i)), o.y.erase(o.y.begin() + static_cast<long>(i)), dropped = true;
+    }
+  }
+  double turning = 0;
+  bool left = o.x.size() >= 3;
+  for (size_t i = 0; i < o.x.size() && left; ++i) {
+    const size_t m = o.x.size(), a = (i + m - 1) % m, b = (i + 1) % m;
+    const double ux = o.x[i] - o.x[a], uy = o.y[i] - o.y[a], vx = o.x[b] - o.x[i], vy = o.y[b] - o.y[i];
+    left = ux * vy - uy * vx > 0;
+    turning += std::atan2(ux * vy - uy * vx, ux * vx + uy * vy);
+  }
+  // A star turns left at every vertex too, but twice round.
+  if (!left || std::abs(turning - 2 * M_PI) > 1e-6) {
+    why = "the polygon is not convex";
+    return {};
+  }
+  return o;
+}
+
+// The sides of the outline, each with its splines (D33); `why` says what does not fit.
+std::vector<KinkSide> polygon_sides(const Outline& o, double h, std::string& why) {
   std::vector<KinkSide> sides;
+  const size_t m = o.x.size();
   for (size_t i = 0; i < m; ++i) {
     KinkSide q;
-    q.x0 = vx[i], q.y0 = vy[i];
-    const double dx = vx[(i + 1) % m] - vx[i], dy = vy[(i + 1) % m] - vy[i];
+    q.x0 = o.x[i], q.y0 = o.y[i];
+    const double dx = o.x[(i + 1) % m] - o.x[i], dy = o.y[(i + 1) % m] - o.y[i];
     q.length = std::hypot(dx, dy);
     if (!(q.length >= kKinkMinRadiusCells * h)) {
       why = "every side of the polygon must be at least " + std::to_string(static_cast<int>(kKinkMinRadiusCells)) + " cells long";
@@ -153,20 +187,15 @@ std::vector<KinkSide> polygon_sides(const EdgeCurve& p, double h, std::string& w
     q.spacing = q.length / intervals, q.count = intervals + 3;
     sides.push_back(q);
   }
-  for (size_t i = 0; i < m; ++i) {
-    const KinkSide &a = sides[i], &b = sides[(i + 1) % m];
-    if (a.tx * b.ty - a.ty * b.tx < -1e-12) {
-      why = "the polygon is not convex";
-      return {};
-    }
-  }
-  // A side along a grid line needs no function: the squares meet there with only w and its slopes
-  // shared, so the plain space already carries a kink across it. Its F would be bicubic on every
-  // square and equal its own interpolant, psi = 0, and the bordered system singular.
+  // A side along a grid line gets no functions: the squares meet there sharing only w and its
+  // slopes, so the plain space carries a kink across it already (a cubic one on each square). Its
+  // psi would only add breaks at knots that fall inside squares, and where the knots fall on grid
+  // lines too it is 0 and the bordered system singular. Within 1e-6 of a cell of a grid line psi is
+  // of that size, and the system about as near singular: such a side counts as on the line.
   std::vector<KinkSide> kept;
   for (KinkSide q : sides) {
     const double across = std::abs(q.tx) < 1e-12 ? q.x0 : std::abs(q.ty) < 1e-12 ? q.y0 : NAN;
-    if (std::abs(across / h - std::round(across / h)) < 1e-9) continue;
+    if (std::abs(across / h - std::round(across / h)) < 1e-6) continue;
     q.first = kept.empty() ? 0 : kept.back().first + kept.back().count;
     kept.push_back(q);
   }
@@ -180,13 +209,13 @@ std::vector<KinkSide> polygon_sides(const EdgeCurve& p, double h, std::string& w
 // Its half-width is a quarter of the shorter side at the corner or a third of the corner's distance
 // from the clamped edges, whichever is less, lengths of the scene alone; but never less than the
 // band of `zero` cells, on a grid too coarse for that.
-std::vector<KinkCorner> polygon_corners(const EdgeCurve& p, const Grid& g, const KinkBand& band, int first) {
+std::vector<KinkCorner> polygon_corners(const Outline& o, const Grid& g, const KinkBand& band, int first) {
   std::vector<KinkCorner> c;
-  const size_t m = p.vx.size();
+  const size_t m = o.x.size();
   for (size_t i = 0; i < m; ++i) {
-    const double x = p.vx[i], y = p.vy[i];
-    const double before = std::hypot(x - p.vx[(i + m - 1) % m], y - p.vy[(i + m - 1) % m]);
-    const double after = std::hypot(x - p.vx[(i + 1) % m], y - p.vy[(i + 1) % m]);
+    const double x = o.x[i], y = o.y[i];
+    const double before = std::hypot(x - o.x[(i + m - 1) % m], y - o.y[(i + m - 1) % m]);
+    const double after = std::hypot(x - o.x[(i + 1) % m], y - o.y[(i + 1) % m]);
     const double room = std::min({x, y, g.whole_lx() - x, g.whole_ly() - y});
     const double outer = std::max(std::min(0.25 * std::min(before, after), room / 3), band.zero * g.h);
     c.push_back({x, y, first + static_cast<int>(i), outer * band.flat / band.zero, outer});
@@ -267,7 +296,8 @@ bool orbits(const Grid& g, KinkEnrichment& e) {
   return true;
 }
 
-KinkEnrichment sides_enrichment(const Grid& g, const EdgeCurve& p, const std::vector<KinkSide>& sides, const KinkBand& band) {
+// The enrichment of (D33) and (D34) before the mirror orbits: the sides' splines, then the corners.
+KinkEnrichment sides_enrichment(const Grid& g, const Outline& p, const std::vector<KinkSide>& sides, const KinkBand& band) {
   KinkEnrichment e;
   e.sides = sides;
   e.inner = band.flat * g.h, e.outer = band.zero * g.h, e.unit = g.h;
@@ -282,9 +312,11 @@ KinkEnrichment sides_enrichment(const Grid& g, const EdgeCurve& p, const std::ve
 std::string side_kink_misfit(const Grid& g, const EdgeCurve& p, const KinkBand& band) {
   if (p.kind != EdgeCurve::Kind::Polygon) return "the edge is not a polygon";
   std::string why;
-  const std::vector<KinkSide> sides = polygon_sides(p, g.h, why);
+  const Outline o = convex_outline(p, why);
   if (!why.empty()) return why;
-  KinkEnrichment e = sides_enrichment(g, p, sides, band);
+  const std::vector<KinkSide> sides = polygon_sides(o, g.h, why);
+  if (!why.empty()) return why;
+  KinkEnrichment e = sides_enrichment(g, o, sides, band);
   if (const std::string room = clearance(g, sides, e.corners, band.zero * g.h); !room.empty()) return room;
   if (!orbits(g, e)) return "its functions do not map onto each other across the mirror lines";
   return "";
@@ -294,11 +326,13 @@ KinkEnrichment make_side_kinks(const Grid& g, const EdgeCurve& p, const KinkBand
   check_kink_band(band);
   if (const std::string why = side_kink_misfit(g, p, band); !why.empty()) throw std::invalid_argument("--enrich sides: " + why);
   std::string unused;
-  KinkEnrichment e = sides_enrichment(g, p, polygon_sides(p, g.h, unused), band);
+  const Outline o = convex_outline(p, unused);
+  KinkEnrichment e = sides_enrichment(g, o, polygon_sides(o, g.h, unused), band);
   orbits(g, e);
   return e;
 }
 
+// Eq. (D33)'s F of function k, plus its corners' D_V (D34).
 KinkValue side_kink_profile(const KinkEnrichment& e, int k, double x, double y) {
   KinkValue v;
   for (const KinkSide& q : e.sides) {
@@ -313,6 +347,7 @@ KinkValue side_kink_profile(const KinkEnrichment& e, int k, double x, double y) 
   return v;
 }
 
+// Eq. (D33): the Hermite interpolant of each side's F (the corners' functions need none).
 SpMat side_kink_interpolant(const Grid& g, const KinkEnrichment& e) {
   std::vector<Eigen::Triplet<double>> t;
   const double read = e.outer + 1.5 * g.h;  // the nodes of every square where chi is not 0
@@ -354,7 +389,7 @@ static bool near_corner(const KinkEnrichment& e, double x, double y) {
 bool side_kink_near(const KinkEnrichment& e, double x, double y) { return near_sides(e, x, y) || near_corner(e, x, y); }
 
 namespace {
-// The sides' D = sum c F - I_h(sum c F) at (x, y), the interpolant's share given.
+// Eq. (D33): the sides' D = sum c F - I_h(sum c F) at (x, y), the interpolant's share given.
 KinkValue side_difference(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y) {
   KinkValue D;
   add(D, interpolant, -1.0);
@@ -365,19 +400,20 @@ KinkValue side_difference(const KinkEnrichment& e, const VectorXd& c, const Kink
   }
   return D;
 }
-// The corners' sum c D_V, which chi does not multiply: cut off again at the sides' band, a corner's
+// Eq. (D34): the corners' sum c D_V, which chi does not multiply: cut off again at the sides' band, a corner's
 // function would lose, a few cells from the sides, what its box keeps for the order's sake
 // (polygon_corners); measured, the order fell back to 2.
-KinkValue corners_sum(const KinkEnrichment& e, const VectorXd& c, double x, double y) {
+KinkValue corners_sum(const KinkEnrichment& e, const VectorXd& c, double x, double y, const int* cell = nullptr) {
   KinkValue D;
   for (const KinkCorner& V : e.corners)
-    if (in_box(e, V, x, y)) add(D, corner_difference(e, V, x, y), c[e.function_of_spline[V.index]]);
+    if (in_box(e, V, x, y)) add(D, corner_difference(e, V, x, y, cell), c[e.function_of_spline[V.index]]);
   return D;
 }
 }  // namespace
 
-KinkValue side_kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y) {
-  KinkValue out = near_corner(e, x, y) ? corners_sum(e, c, x, y) : KinkValue{};
+// psi = chi D + sum_V c_V D_V of (D33) and (D34) at (x, y), with its derivatives.
+KinkValue side_kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y, const int* cell) {
+  KinkValue out = near_corner(e, x, y) ? corners_sum(e, c, x, y, cell) : KinkValue{};
   if (!near_sides(e, x, y)) return out;
   const KinkValue D = side_difference(e, c, interpolant, x, y), chi = side_cutoff(e, x, y);
   out.w += chi.w * D.w;
@@ -389,6 +425,7 @@ KinkValue side_kink_field(const KinkEnrichment& e, const VectorXd& c, const Kink
   return out;
 }
 
+// The value alone of side_kink_field's psi, (D33) and (D34).
 double side_kink_value(const KinkEnrichment& e, const VectorXd& c, double interpolant, double x, double y) {
   const double v = near_corner(e, x, y) ? corners_sum(e, c, x, y).w : 0;
   if (!near_sides(e, x, y)) return v;
@@ -620,7 +657,8 @@ KinkBlocks assemble_side_kink_blocks(const Grid& g, const KinkEnrichment& e, con
         VectorXd psi = chi.w * Dv, lap_psi = chi.w * Dl + 2 * (chi.wx * Dx + chi.wy * Dy) + (chi.wxx + chi.wyy) * Dv;
         for (const KinkCorner& V : e.corners) {  // chi does not multiply them (corners_sum)
           if (!in_box(e, V, p.x, p.y)) continue;
-          const KinkValue F = corner_difference(e, V, p.x, p.y);
+          const int here[2] = {ex, ey};
+          const KinkValue F = corner_difference(e, V, p.x, p.y, here);
           const int l = local(e.function_of_spline[V.index]);
           psi[l] += F.w, lap_psi[l] += F.wxx + F.wyy;
         }

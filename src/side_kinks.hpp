@@ -37,7 +37,8 @@ KinkValue side_kink_profile(const KinkEnrichment& e, int k, double x, double y);
 SpMat side_kink_interpolant(const Grid& g, const KinkEnrichment& e);
 KinkBlocks assemble_side_kink_blocks(const Grid& g, const KinkEnrichment& e, const SpMat& interpolant, const Field& f);
 bool side_kink_near(const KinkEnrichment& e, double x, double y);
-KinkValue side_kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y);
+KinkValue side_kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue& interpolant, double x, double y,
+                          const int* cell = nullptr);
 double side_kink_value(const KinkEnrichment& e, const VectorXd& c, double interpolant, double x, double y);
 
 }  // namespace plate
