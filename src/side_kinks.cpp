@@ -556,8 +556,8 @@ std::vector<Point> cell_rule(const KinkEnrichment& e, double x0, double y0, doub
       active += d > e.inner && d < e.outer;
     }
     const int n = 5 * active + 5;
-    // Near a corner whose F is not 0 on the piece, a logarithm: graded from the nearest point where
-    // the corner is within the piece's size, else Gauss with points enough for a smooth log.
+    // Near a corner whose D_V is not 0 on the piece, a logarithm: graded from the piece's point
+    // nearest the corner where the corner is within the piece's size, else Gauss.
     const KinkCorner* near = nullptr;
     double gap = INFINITY;
     for (const KinkCorner& V : e.corners)
@@ -568,15 +568,16 @@ std::vector<Point> cell_rule(const KinkEnrichment& e, double x0, double y0, doub
       }
     if (zero && !near) continue;  // chi = 0 on the piece, and no corner's box
     if (near && gap < size) {
+      // At the corner itself the grading meets the logarithm and the rest is smooth. From a point
+      // near it the logarithm, a fraction of the piece away, slows the rule across as well: 8 points
+      // left 4e-10 of a block entry there (against a polar rule about the corner), 16 do not; and
+      // Gauss's 16 points ungraded moved the acute triangle's max w by 8e-9 at n = 64.
       const Piece fan = with_nearest_first(p, near->x, near->y);
-      // At the corner itself the grading meets the logarithm and the rest is smooth; from a point
-      // near it, the logarithm a fraction of the piece away also slows the rule across: 8 points
-      // left 4e-10 of a block entry there (against a polar rule about the corner), 16 do not.
       for (size_t i = 1; i + 1 < fan.size(); ++i) triangle_rule(fan[0], fan[i], fan[i + 1], std::max(n, gap > 0 ? 16 : 8), true, h, rule);
       continue;
     }
     // Several sizes away G is smooth on the piece, and D_V small: fewer points suffice there.
-    const int m = !near ? n : std::max(n, gap < 3 * size ? 16 : 12);
+    const int m = !near ? n : std::max(n, gap < 3 * size ? 12 : 8);
     for (size_t i = 1; i + 1 < p.size(); ++i) triangle_rule(p[0], p[i], p[i + 1], m, false, h, rule);
   }
   return rule;
