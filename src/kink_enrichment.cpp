@@ -34,7 +34,6 @@ Radial kink_radial(double d, double a, double unit) {
 }
 // @end kink-functions
 
-Radial cutoff(const KinkEnrichment& e, double d) { return kink_cutoff(e, d); }
 
 // The (at most four) splines that do not vanish at angle theta: their indices and values.
 struct SplinesAt {
@@ -108,10 +107,9 @@ void circle_crossings(double cx, double cy, double rho, double x0, double x1, do
 
 }  // namespace
 
-static void require_valid(const KinkBand& band) { check_kink_band(band); }
 
 std::string kink_misfit(const Grid& g, const EdgeCurve& c, const KinkBand& band) {
-  require_valid(band);
+  check_kink_band(band);
   if (c.kind == EdgeCurve::Kind::Polygon) return side_kink_misfit(g, c, band);
   if (c.kind != EdgeCurve::Kind::Circle) return "the edge is neither a circle nor a polygon";
   const double clearance = std::min({c.cx - c.r, g.whole_lx() - c.cx - c.r, c.cy - c.r, g.whole_ly() - c.cy - c.r});
@@ -307,7 +305,7 @@ static void cell_blocks(const Grid& g, const KinkEnrichment& e, const Field& f, 
       for (int l = 0; l < L; ++l) psi(l, p) = D(np + p, l), lap_psi(l, p) = D(p, l);
       continue;
     }
-    const Radial chi = cutoff(e, r - e.a);
+    const Radial chi = kink_cutoff(e.inner, e.outer, r - e.a);
     const double lapchi = chi.g2 + chi.g1 / r;
     for (int l = 0; l < L; ++l)
       psi(l, p) = chi.g * D(np + p, l), lap_psi(l, p) = chi.g * D(p, l) + 2 * chi.g1 * D(sr, l) + D(np + p, l) * lapchi;
@@ -442,7 +440,7 @@ KinkValue kink_field(const KinkEnrichment& e, const VectorXd& c, const KinkValue
   KinkValue out;
   if (!kink_near(e, x, y)) return out;
   const double dx = x - e.cx, dy = y - e.cy, r = std::hypot(dx, dy);
-  const Radial chi = cutoff(e, r - e.a);
+  const Radial chi = kink_cutoff(e.inner, e.outer, r - e.a);
   KinkValue D;
   add(D, interpolant, -1.0);
   const Radial F = kink_radial(r - e.a, e.a, e.unit);
@@ -477,7 +475,7 @@ double kink_value(const KinkEnrichment& e, const VectorXd& c, double interpolant
     const SplinesAt sp = splines_at(e, th < 0 ? th + 2 * M_PI : th);
     for (int i = 0; i < sp.count; ++i) D += c[e.function_of_spline[sp.j[i]]] * (F.g * sp.b[i].v);
   }
-  return cutoff(e, r - e.a).g * D;
+  return kink_cutoff(e.inner, e.outer, r - e.a).g * D;
 }
 
 KinkEnrichment unfold_kink(const KinkEnrichment& part, const VectorXd& c_part, VectorXd& c_whole) {

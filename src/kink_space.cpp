@@ -19,10 +19,10 @@ KinkSpline cubic_bspline(double x) {
 
 // @region kink-cutoff
 // chi(d) and its first two derivatives: the quintic smoothstep, C^2, from 1 at inner to 0 at outer.
-KinkRadial kink_cutoff(const KinkEnrichment& e, double d) {
-  if (d <= e.inner) return {1, 0, 0};
-  if (d >= e.outer) return {};
-  const double L = e.outer - e.inner, u = (d - e.inner) / L, u2 = u * u;
+KinkRadial kink_cutoff(double inner, double outer, double d) {
+  if (d <= inner) return {1, 0, 0};
+  if (d >= outer) return {};
+  const double L = outer - inner, u = (d - inner) / L, u2 = u * u;
   return {1 - u2 * u * (10 - 15 * u + 6 * u2), -30 * u2 * (1 - 2 * u + u2) / L, -60 * u * (1 - 3 * u + 2 * u2) / (L * L)};
 }
 // @end kink-cutoff

@@ -70,8 +70,9 @@ KinkSpline cubic_bspline(double x);
 struct KinkRadial {
   double g = 0, g1 = 0, g2 = 0;
 };
-// chi(d) of (D31) and (D33): the quintic smoothstep, C^2, from 1 at e.inner to 0 at e.outer.
-KinkRadial kink_cutoff(const KinkEnrichment& e, double d);
+// chi(d) of (D31) and (D33), and a corner's box of (D34) in each coordinate: the quintic
+// smoothstep, C^2, from 1 at inner to 0 at outer.
+KinkRadial kink_cutoff(double inner, double outer, double d);
 
 using KinkValue = PlaneDerivatives;
 

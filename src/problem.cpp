@@ -109,27 +109,26 @@ static void fit_columns(Problem& p) {
   const int first = p.sampling.edge_begin;
   RowSpMat SP;
   if (p.kink) SP = p.sampling.S.bottomRows(p.sampling.edge_size()).leftCols(N) * p.kink_interp;  // edge rows only
+  std::vector<int> corner_functions;  // the corners' functions (D34), each once: mirror images share one
+  if (p.kink)
+    for (const KinkCorner& V : p.kink->corners)
+      if (const int k = p.kink->function_of_spline[V.index]; std::find(corner_functions.begin(), corner_functions.end(), k) == corner_functions.end())
+        corner_functions.push_back(k);
   std::vector<Eigen::Triplet<double>> t;
   for (Eigen::Index r = 0; r < p.sampling.S.outerSize(); ++r) {
     for (RowSpMat::InnerIterator it(p.sampling.S, r); it; ++it)
       if (it.col() < N) t.emplace_back(r, it.col(), it.value());
     if (r >= first && p.kink)
       for (RowSpMat::InnerIterator it(SP, r - first); it; ++it) t.emplace_back(r, N + it.col(), -it.value());
-    // A corner's function (D34) is not 0 on the edge and has no columns in P: the row reads it.
-    if (r >= first && p.kink && !p.kink->corners.empty()) {
-      const std::vector<RowPoint> at = edge_row_points(p.grid, p.scene.edge, p.sampling, static_cast<int>(r - first));
-      std::vector<int> done;
-      for (const KinkCorner& V : p.kink->corners) {
-        const int k = p.kink->function_of_spline[V.index];
-        if (std::find(done.begin(), done.end(), k) != done.end()) continue;
-        done.push_back(k);
-        double v = 0;
-        for (const RowPoint& q : at) v += q.weight * kink_profile(*p.kink, k, q.x, q.y).w;  // D_V: psi_V itself
-        if (v != 0) t.emplace_back(r, N + k, v);
-      }
-    }
-    if (r < first || p.ends.empty()) continue;
+    if (r < first || (corner_functions.empty() && p.ends.empty())) continue;
+    // The functions that do not vanish on the edge, read by each edge row's own points: a corner's
+    // (D34), which has no columns in P, and the ends'.
     const std::vector<RowPoint> at = edge_row_points(p.grid, p.scene.edge, p.sampling, static_cast<int>(r - first));
+    for (const int k : corner_functions) {
+      double v = 0;
+      for (const RowPoint& q : at) v += q.weight * kink_profile(*p.kink, k, q.x, q.y).w;  // D_V: psi_V itself
+      if (v != 0) t.emplace_back(r, N + k, v);
+    }
     for (size_t f = 0; f < p.ends.size(); ++f) {
       double v = 0;
       for (const RowPoint& q : at) v += q.weight * end_function(p.ends[f], p.end_fields[f], p.grid, q.x, q.y).w;

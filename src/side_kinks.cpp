@@ -14,12 +14,6 @@ namespace plate {
 
 namespace {
 
-std::string fmt_cells(double v) {
-  std::ostringstream o;
-  o << v;
-  return o.str();
-}
-
 double dist(const KinkSide& q, double x, double y) { return (x - q.x0) * q.nx + (y - q.y0) * q.ny; }
 double along(const KinkSide& q, double x, double y) { return (x - q.x0) * q.tx + (y - q.y0) * q.ty; }
 // The splines' reach past the side's ends: the first is centred a spacing before the first
@@ -60,7 +54,7 @@ KinkValue side_profile(const KinkSide& q, const KinkSpline& b, double d, double 
 KinkValue side_cutoff(const KinkEnrichment& e, double x, double y) {
   KinkValue c{1, 0, 0, 0, 0, 0};
   for (const KinkSide& q : e.sides) {
-    const KinkRadial f = kink_cutoff(e, dist(q, x, y));
+    const KinkRadial f = kink_cutoff(e.inner, e.outer, dist(q, x, y));
     if (f.g == 1 && f.g1 == 0 && f.g2 == 0) continue;
     if (f.g == 0 && f.g1 == 0 && f.g2 == 0) return {};
     const double fx = f.g1 * q.nx, fy = f.g1 * q.ny;
@@ -107,9 +101,7 @@ KinkValue corner_difference(const KinkEnrichment& e, const KinkCorner& V, double
         D.wxx -= comp[c] * b.dxx[i], D.wxy -= comp[c] * b.dxy[i], D.wyy -= comp[c] * b.dyy[i];
       }
     }
-  KinkEnrichment box;  // the corner's own band, for kink_cutoff
-  box.inner = V.inner, box.outer = V.outer;
-  const KinkRadial bx = kink_cutoff(box, std::abs(X)), by = kink_cutoff(box, std::abs(Y));
+  const KinkRadial bx = kink_cutoff(V.inner, V.outer, std::abs(X)), by = kink_cutoff(V.inner, V.outer, std::abs(Y));
   const double sx = X < 0 ? -1 : 1, sy = Y < 0 ? -1 : 1;
   const double B = bx.g * by.g, Bx = sx * bx.g1 * by.g, By = sy * by.g1 * bx.g;
   const double Bxx = bx.g2 * by.g, Byy = by.g2 * bx.g, Bxy = sx * sy * bx.g1 * by.g1;
@@ -123,8 +115,8 @@ KinkValue corner_difference(const KinkEnrichment& e, const KinkCorner& V, double
 // @end corner-functions
 
 // Whether D_V of corner V can be nonzero at (x, y): within its box.
-bool in_box(const KinkEnrichment& e, const KinkCorner& V, double x, double y, double grow = 0) {
-  return std::abs(x - V.x) < V.outer + grow && std::abs(y - V.y) < V.outer + grow;
+bool in_box(const KinkCorner& V, double x, double y) {
+  return std::abs(x - V.x) < V.outer && std::abs(y - V.y) < V.outer;
 }
 
 void add(KinkValue& to, const KinkValue& v, double c) {
@@ -230,9 +222,12 @@ std::string clearance(const Grid& g, const std::vector<KinkSide>& sides, const s
   const double margin = 0.5 * g.h;
   for (const KinkCorner& V : corners) {
     const double room = V.outer + 1.5 * g.h + margin;
-    if (!(V.x > room && V.y > room && V.x < g.whole_lx() - room && V.y < g.whole_ly() - room))
-      return "a corner's function (D34) reaches within half a cell of a clamped edge on this grid (h = " + fmt_cells(g.h) +
-             "): each corner needs " + fmt_cells(room / g.h) + " cells of room";
+    if (!(V.x > room && V.y > room && V.x < g.whole_lx() - room && V.y < g.whole_ly() - room)) {
+      std::ostringstream m;
+      m << "a corner's function (D34) reaches within half a cell of a clamped edge on this grid (h = " << g.h
+        << "): each corner needs " << room / g.h << " cells of room";
+      return m.str();
+    }
   }
   for (const KinkSide& q : sides)
     for (double s : {-reach(q), q.length + reach(q)})
@@ -309,26 +304,32 @@ KinkEnrichment sides_enrichment(const Grid& g, const Outline& p, const std::vect
 
 }  // namespace
 
-std::string side_kink_misfit(const Grid& g, const EdgeCurve& p, const KinkBand& band) {
-  if (p.kind != EdgeCurve::Kind::Polygon) return "the edge is not a polygon";
-  std::string why;
+namespace {
+// The enrichment of (D33) and (D34) for polygon p on grid g, or why it does not fit.
+KinkEnrichment fit_side_kinks(const Grid& g, const EdgeCurve& p, const KinkBand& band, std::string& why) {
+  if (p.kind != EdgeCurve::Kind::Polygon) return why = "the edge is not a polygon", KinkEnrichment{};
   const Outline o = convex_outline(p, why);
-  if (!why.empty()) return why;
+  if (!why.empty()) return {};
   const std::vector<KinkSide> sides = polygon_sides(o, g.h, why);
-  if (!why.empty()) return why;
+  if (!why.empty()) return {};
   KinkEnrichment e = sides_enrichment(g, o, sides, band);
-  if (const std::string room = clearance(g, sides, e.corners, band.zero * g.h); !room.empty()) return room;
-  if (!orbits(g, e)) return "its functions do not map onto each other across the mirror lines";
-  return "";
+  if (why = clearance(g, sides, e.corners, band.zero * g.h); !why.empty()) return {};
+  if (!orbits(g, e)) why = "its functions do not map onto each other across the mirror lines";
+  return e;
+}
+}  // namespace
+
+std::string side_kink_misfit(const Grid& g, const EdgeCurve& p, const KinkBand& band) {
+  std::string why;
+  fit_side_kinks(g, p, band, why);
+  return why;
 }
 
 KinkEnrichment make_side_kinks(const Grid& g, const EdgeCurve& p, const KinkBand& band) {
   check_kink_band(band);
-  if (const std::string why = side_kink_misfit(g, p, band); !why.empty()) throw std::invalid_argument("--enrich sides: " + why);
-  std::string unused;
-  const Outline o = convex_outline(p, unused);
-  KinkEnrichment e = sides_enrichment(g, o, polygon_sides(o, g.h, unused), band);
-  orbits(g, e);
+  std::string why;
+  KinkEnrichment e = fit_side_kinks(g, p, band, why);
+  if (!why.empty()) throw std::invalid_argument("--enrich sides: " + why);
   return e;
 }
 
@@ -383,7 +384,7 @@ static bool near_sides(const KinkEnrichment& e, double x, double y) {
 }
 
 static bool near_corner(const KinkEnrichment& e, double x, double y) {
-  return std::any_of(e.corners.begin(), e.corners.end(), [&](const KinkCorner& V) { return in_box(e, V, x, y); });
+  return std::any_of(e.corners.begin(), e.corners.end(), [&](const KinkCorner& V) { return in_box(V, x, y); });
 }
 
 bool side_kink_near(const KinkEnrichment& e, double x, double y) { return near_sides(e, x, y) || near_corner(e, x, y); }
@@ -406,7 +407,7 @@ KinkValue side_difference(const KinkEnrichment& e, const VectorXd& c, const Kink
 KinkValue corners_sum(const KinkEnrichment& e, const VectorXd& c, double x, double y, const int* cell = nullptr) {
   KinkValue D;
   for (const KinkCorner& V : e.corners)
-    if (in_box(e, V, x, y)) add(D, corner_difference(e, V, x, y, cell), c[e.function_of_spline[V.index]]);
+    if (in_box(V, x, y)) add(D, corner_difference(e, V, x, y, cell), c[e.function_of_spline[V.index]]);
   return D;
 }
 }  // namespace
@@ -558,13 +559,14 @@ std::vector<Point> cell_rule(const KinkEnrichment& e, double x0, double y0, doub
     const int n = 5 * active + 5;
     // Near a corner whose D_V is not 0 on the piece, a logarithm: graded from the piece's point
     // nearest the corner where the corner is within the piece's size, else Gauss.
-    const KinkCorner* near = nullptr;
+    bool near = false;
     double gap = INFINITY;
+    Piece fan;  // from the piece's point nearest the nearest corner
     for (const KinkCorner& V : e.corners)
-      if (in_box(e, V, cx, cy)) {
-        const Piece fan = with_nearest_first(p, V.x, V.y);
-        const double d = std::hypot(fan[0][0] - V.x, fan[0][1] - V.y);
-        if (d < gap) gap = d, near = &V;
+      if (in_box(V, cx, cy)) {
+        Piece from = with_nearest_first(p, V.x, V.y);
+        const double d = std::hypot(from[0][0] - V.x, from[0][1] - V.y);
+        if (d < gap) gap = d, near = true, fan = std::move(from);
       }
     if (zero && !near) continue;  // chi = 0 on the piece, and no corner's box
     if (near && gap < size) {
@@ -572,7 +574,6 @@ std::vector<Point> cell_rule(const KinkEnrichment& e, double x0, double y0, doub
       // near it the logarithm, a fraction of the piece away, slows the rule across as well: 8 points
       // left 4e-10 of a block entry there (against a polar rule about the corner), 16 do not; and
       // Gauss's 16 points ungraded moved the acute triangle's max w by 8e-9 at n = 64.
-      const Piece fan = with_nearest_first(p, near->x, near->y);
       for (size_t i = 1; i + 1 < fan.size(); ++i) triangle_rule(fan[0], fan[i], fan[i + 1], std::max(n, gap > 0 ? 16 : 8), true, h, rule);
       continue;
     }
@@ -634,7 +635,7 @@ KinkBlocks assemble_side_kink_blocks(const Grid& g, const KinkEnrichment& e, con
         for (const KinkSide& q : e.sides)
           if (dist(q, p.x, p.y) > 0) for_splines(q, along(q, p.x, p.y), [&](int J, const KinkSpline&) { local(e.function_of_spline[J]); });
         for (const KinkCorner& V : e.corners)
-          if (in_box(e, V, p.x, p.y)) local(e.function_of_spline[V.index]);
+          if (in_box(V, p.x, p.y)) local(e.function_of_spline[V.index]);
       }
       const int L = static_cast<int>(met.size());
       if (L == 0) continue;
@@ -657,7 +658,7 @@ KinkBlocks assemble_side_kink_blocks(const Grid& g, const KinkEnrichment& e, con
         const KinkValue chi = side_cutoff(e, p.x, p.y);
         VectorXd psi = chi.w * Dv, lap_psi = chi.w * Dl + 2 * (chi.wx * Dx + chi.wy * Dy) + (chi.wxx + chi.wyy) * Dv;
         for (const KinkCorner& V : e.corners) {  // chi does not multiply them (corners_sum)
-          if (!in_box(e, V, p.x, p.y)) continue;
+          if (!in_box(V, p.x, p.y)) continue;
           const int here[2] = {ex, ey};
           const KinkValue F = corner_difference(e, V, p.x, p.y, here);
           const int l = local(e.function_of_spline[V.index]);

@@ -619,6 +619,8 @@ TEST(SideKinks, ACornersFunctionTakesThePointLoadsFundamentalSolution) {
     ASSERT_GE(at, 0);
     EXPECT_NEAR(x[N + at], fundamental, 2e-3 * fundamental) << n;
     for (int k = 0; k < e.size(); ++k)
-      if (k != at) EXPECT_LT(std::abs(x[N + k]), 1e-3 * fundamental) << n << " " << k;
+      if (k != at) {
+        EXPECT_LT(std::abs(x[N + k]), 1e-3 * fundamental) << n << " " << k;
+      }
   }
 }
