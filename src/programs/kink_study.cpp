@@ -3,8 +3,8 @@
 // the rim-contact series solves), the exact solver with the default rows in the plain space and
 // with the kink carried, on n = 16 ... 256 (20 ... 320 on the 1.25 plate): the distance of max w
 // (the field's peak), the total force and the line load point by point from the series, with the
-// observed orders; then the stability section (stability(), below) and the polygons' (D33)
-// (polygons()). Writes results/kink.{md,csv}, results/kink_stability.csv and kink_polygon.csv. Run by `make kink`; `kink_study --help` lists the options.
+// observed orders; then the stability section (stability(), below) and the polygons' (D33) and
+// (D34) (polygons()). Writes results/kink.{md,csv}, results/kink_stability.csv and kink_polygon.csv. Run by `make kink`; `kink_study --help` lists the options.
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -291,11 +291,12 @@ std::vector<StabilityRow> stability(int finest) {
   return rows;
 }
 
-// Issue 43's polygons: (D33) against the plain space on three scenes with a polygon's edge, which no
-// series solves, so each is measured against itself, grid against grid. The square lifts the plate
-// as the paper's cylinder does, and the plate then rests on its four corners alone (point loads,
-// which no function across the sides carries); pressed onto a square of height 0, the plate rests on
-// the sides and lifts off near the corners; the acute triangle is the hard scenes'.
+// Issue 43's polygons: (D33) and (D34) against the plain space on three scenes with a polygon's edge,
+// which no series solves, so each is measured against itself, grid against grid. The square lifts
+// the plate as the paper's cylinder does, and the plate then rests on its four corners alone (point
+// loads, which (D34) carries and no function across the sides can); pressed onto a square of height
+// 0, the plate rests on each corner and each side's middle and lifts off between them; the acute
+// triangle is the hard scenes'.
 struct PolygonRow {
   std::string scene, space;
   int n = 0, functions = 0;
@@ -321,7 +322,7 @@ std::vector<PolygonRow> polygons(int finest) {
         if (kink) spec.enrich.kind = EnrichSpec::Kind::Sides;
         std::cerr << "kink_study: polygons, " << key << (kink ? " kink" : " plain") << ", n = " << n << "\n";
         const SceneSolution x = solve_exact_scene(scene, n, spec, ExactOptions{});
-        if (kink && !x.solved.kink) continue;  // (D33) does not fit this grid: its plain run is there already
+        if (kink && !x.solved.kink) continue;  // (D33) and (D34) do not fit this grid: its plain run is there already
         PolygonRow r;
         r.scene = key, r.space = x.solved.kink ? "kink" : "plain", r.n = n, r.certified = x.result.converged;
         r.functions = x.solved.kink ? x.solved.kink->size() : 0;
@@ -351,7 +352,7 @@ std::vector<Steps> steps_of(const std::vector<PolygonRow>& rows) {
 std::string polygon_csv(const std::vector<PolygonRow>& rows) {
   std::ostringstream o;
   o << "# kink_study, polygons: exact solves with the default rows (points on a polygon), in the plain space\n"
-       "# and with (D33) (plate --enrich sides, on every grid it fits), on n = 32 ... finest; no series solves\n"
+       "# and with (D33) and (D34) (plate --enrich sides, on every grid they fit), on n = 32 ... finest; no series solves\n"
        "# these scenes, so step_* is the distance from the grid before and order_* the order two steps give.\n"
        "# Made by build/kink_study\n"
        "scene,space,n,functions,certified,max_w,force,step_max_w,step_force,order_max_w,order_force\n";
